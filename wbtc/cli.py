@@ -1,0 +1,87 @@
+"""The `wbtc` command line. The only place that prints diagnostics and chooses exit codes.
+
+A `WbtcError` becomes `path:line:col: error: message`, the source line and a caret on stderr, and
+exit code 1; the user never sees a traceback for a mistake in a world file.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable
+from pathlib import Path
+from typing import Annotated, TypeVar
+
+import typer
+
+from wbtc.errors import Diagnostic, WbtcError, render_diagnostic
+
+app = typer.Typer(
+    name="wbtc",
+    help="Run Webots worlds and their Python controllers without Webots (MuJoCo inside).",
+    add_completion=False,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+)
+
+
+
+@app.callback()
+def _root() -> None:
+    """Run Webots worlds and their Python controllers without Webots (MuJoCo inside)."""
+
+
+#: Diagnostics printed for one failure before the rest are counted.
+SHOWN_ERRORS = 20
+T = TypeVar("T")
+
+
+def _print_diagnostics(diagnostics: list[Diagnostic]) -> None:
+    color = sys.stderr.isatty()
+    for diag in diagnostics[:SHOWN_ERRORS]:
+        typer.echo(render_diagnostic(diag, color=color), err=True)
+    if len(diagnostics) > SHOWN_ERRORS:
+        typer.echo(f"... and {len(diagnostics) - SHOWN_ERRORS} more errors", err=True)
+
+
+def _guard(action: Callable[[], T]) -> T:
+    try:
+        return action()
+    except WbtcError as exc:
+        _print_diagnostics(exc.diagnostics)
+        count = len(exc.diagnostics)
+        if count > 1:
+            typer.echo(f"{count} errors", err=True)
+        raise typer.Exit(1) from None
+
+
+@app.command()
+def check(
+    world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
+    json_output: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
+) -> None:
+    """Say what is in a world (version, axes, robots, devices, PROTOs) and what is wrong with it."""
+    from wbtc.check import check_report, format_report
+    from wbtc.scene import build_scene
+    from wbtc.vrml import parse_file
+
+    if not world.is_file():
+        _guard(lambda: _missing(world))
+    scene = _guard(lambda: build_scene(parse_file(world)))
+    report = check_report(scene)
+    if json_output:
+        typer.echo(report.model_dump_json())
+        return
+    typer.echo(format_report(report))
+
+
+def _missing(path: Path) -> None:
+    raise WbtcError(f"no such world file: {path}")
+
+
+def main() -> None:
+    """Entry point of the `wbtc` console script."""
+    app()
+
+
+if __name__ == "__main__":
+    main()
