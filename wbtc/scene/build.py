@@ -71,17 +71,18 @@ class NodeBuilder:
         self.warnings.append(Diagnostic(message, span, severity="warning", hint=hint))
 
     def value(self, value: Any) -> Any:
-        """A syntax value with every nested node built and every USE bound (None for a bad USE)."""
+        """A syntax value with every nested node built and every USE bound (`_MISSING` for a bad USE)."""
         if isinstance(value, s.NodeSyntax):
             return self.node(value)
         if isinstance(value, s.Use):
             target = self.defs.get(value.name)
             if target is None:
                 self._missing_uses.append(value)
+                return _MISSING
             return target
         if isinstance(value, s.MFList):
             items = [self.value(item) for item in value.items]
-            return s.MFList([i for i in items if i is not None], value.span)
+            return s.MFList([i for i in items if i is not _MISSING], value.span)
         if isinstance(value, s.IsRef) and not self.in_proto:
             self._error("'IS' is only allowed in a field of a PROTO body", value.span)
         return value
@@ -91,7 +92,10 @@ class NodeBuilder:
         schema = node_schema(syntax.type_name)
         node = Node(syntax.type_name, syntax.span, schema, syntax.def_name)
         self.count += 1
-        if schema is not None and schema.deprecated:
+        if schema is not None and schema.name != syntax.type_name:
+            self._warn_once(syntax.type_name, "", f"{syntax.type_name} is an old name: Webots reads it as "
+                            f"{schema.name}", syntax.span)
+        elif schema is not None and schema.deprecated:
             self._warn_once(syntax.type_name, "", f"{syntax.type_name} is an old node type that current Webots "
                             "no longer has", syntax.span)
         for field in syntax.fields:
@@ -107,6 +111,8 @@ class NodeBuilder:
 
     def _field(self, node: Node, field: s.FieldSyntax) -> None:
         value = self.value(field.value)
+        if value is _MISSING:  # reported once the whole scope is read
+            return
         if field.hidden:
             node.hidden[field.name] = value
             return
@@ -170,6 +176,7 @@ class NodeBuilder:
 
 
 _FAILED = object()
+_MISSING = object()
 
 
 def _is_node(value: Any) -> bool:

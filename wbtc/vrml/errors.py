@@ -77,7 +77,12 @@ def syntax_error_from_lark(exc: lark.exceptions.UnexpectedInput, text: str, path
     if token.type == "IS" or (token.type == "ID" and token.value == "IS"):
         return WbtSyntaxError("'IS' is only allowed in a field of a PROTO body", span)
     if token.type in ("RSQB", "RBRACE"):
-        hint = _unclosed_hint(text, token.start_pos)
+        if not open_brackets(text, token.start_pos):
+            opener = "[" if token.type == "RSQB" else "{"
+            return WbtSyntaxError(f"unexpected {found}: there is no open '{opener}' to close", span)
+        still_open = open_brackets(text, token.start_pos)
+        opener = "[" if token.type == "RSQB" else "{"
+        hint = _unclosed_hint(text, token.start_pos) if still_open[-1].char != opener else None
         return WbtSyntaxError(f"unexpected {found}: expected {_expected(expected)}", span, hint=hint)
     if expected == {"LBRACE"}:
         return _not_a_value(text, token, path)
@@ -98,6 +103,8 @@ def _not_a_value(text: str, token: lark.Token, path: str) -> WbtSyntaxError:
     line = text.count("\n", 0, word.start()) + 1
     column = word.start() - (text.rfind("\n", 0, word.start()) + 1) + 1
     span = Span(path, line, column)
+    if word.group().startswith(("%<", "%{")):
+        return WbtSyntaxError("template statements ('%<', '%{') are only allowed in a PROTO body", span)
     if word.group()[0].isupper():
         return WbtSyntaxError(f"expected '{{' after node type {word.group()}, found {_describe(token)}",
                               Span(path, token.line, token.column))

@@ -70,6 +70,8 @@ _DESCRIBE = {
     "String": "a string in double quotes", "Node": "a node, USE or NULL",
 }
 
+_ITEM_WORDS = {"Bool": "TRUE or FALSE", "String": "strings in double quotes", "Node": "nodes or USE"}
+
 
 def is_mf(field_type: str) -> bool:
     """True for MF types."""
@@ -209,7 +211,14 @@ def _coerce_list(items: list[Any], elem: str, what: str, is_node: Callable[[Any]
             return np.array([_to_int(t, span, what) for t in tokens], dtype=np.int64)
         array = np.array(_numbers(tokens, span), dtype=np.float64)
         return array if arity == 1 else array.reshape(-1, arity)
-    return [_coerce_single(item, elem, what, is_node, "SF" + elem) for item in items]
+    typed = []
+    for item in items:
+        try:
+            typed.append(_coerce_single(item, elem, what, is_node, "SF" + elem))
+        except SchemaError:
+            raise SchemaError(f"{what} is an {field_type}: its items must be {_ITEM_WORDS[elem]}, found "
+                              f"{_describe_found(item)}", getattr(item, "span", span)) from None
+    return typed
 
 
 # --- printing -------------------------------------------------------------------------------------

@@ -1,0 +1,14 @@
+"""Shared test helpers: where the shared corpus and lessons are."""
+
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parent.parent
+SHARED = REPO.parent / "shared"
+CORPUS = SHARED / "corpus"
+
+
+def corpus_files(*suffixes: str) -> list[Path]:
+    """Every corpus file with one of the suffixes, sorted; fails loudly when the corpus is missing."""
+    if not CORPUS.is_dir():
+        raise RuntimeError(f"the shared corpus is missing: {CORPUS}")
+    return sorted(p for p in CORPUS.rglob("*") if p.suffix.lower() in suffixes)

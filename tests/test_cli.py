@@ -1,0 +1,65 @@
+"""The command line: `wbtc check` output, JSON keys, errors without traceback."""
+
+import json
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from wbtc.cli import app
+
+FIXTURES = Path(__file__).parent / "fixtures"
+runner = CliRunner()
+
+
+def test_help_lists_commands() -> None:
+    result = runner.invoke(app, ["--help"])
+    assert result.exit_code == 0
+    assert "check" in result.output
+
+
+def test_check_misspelled_field_points_at_it() -> None:
+    path = FIXTURES / "typo.wbt"
+    result = runner.invoke(app, ["check", str(path)])
+    assert result.exit_code == 1
+    assert result.stderr.splitlines() == [
+        f"{path}:6:3: error: unknown field 'tranlation' in Robot",
+        "      tranlation 0 0 0.1",
+        "      ^",
+        "  hint: did you mean 'translation'?",
+    ]
+    assert "Traceback" not in result.output
+
+
+def test_check_missing_file() -> None:
+    result = runner.invoke(app, ["check", "no/such/world.wbt"])
+    assert result.exit_code == 1
+    assert result.stderr.strip() == "error: no such world file: no/such/world.wbt"
+
+
+def test_check_json_report() -> None:
+    result = runner.invoke(app, ["check", "--json", str(FIXTURES / "small_robot.wbt")])
+    assert result.exit_code == 0
+    report = json.loads(result.stdout)
+    assert report["version"] == "R2025a"
+    assert report["coordinate_system"] == "ENU"
+    assert report["nodes"] == 15
+    assert report["robots"] == [
+        {"name": "bot", "controller": "drive", "devices": [
+            {"name": "ds_front", "type": "DistanceSensor"},
+            {"name": "left motor", "type": "RotationalMotor"},
+            {"name": "left sensor", "type": "PositionSensor"},
+            {"name": "led", "type": "LED"},
+        ]},
+        {"name": "inner", "controller": "<generic>", "devices": [{"name": "gps", "type": "GPS"}]},
+    ]
+    assert report["protos"][0]["name"] == "Wall" and report["protos"][0]["count"] == 2
+    assert report["warnings"] == []
+
+
+def test_check_human_report() -> None:
+    result = runner.invoke(app, ["check", str(FIXTURES / "small_robot.wbt")])
+    assert result.exit_code == 0
+    lines = result.stdout.splitlines()
+    assert lines[0].endswith("small_robot.wbt: Webots R2025a world, ENU axes, 15 nodes")
+    assert "  bot (controller \"drive\", 4 devices)" in lines
+    assert "    ds_front     DistanceSensor" in lines
