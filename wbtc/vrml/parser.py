@@ -113,6 +113,9 @@ class _Builder(lark.Transformer):
     def value_only(self, children: list[Any]) -> Any:
         return children[0]
 
+    def proto_body(self, children: list[Any]) -> list[Any]:
+        return children
+
 
 _BUILDER = _Builder()
 _LOCK = threading.Lock()
@@ -124,7 +127,7 @@ def _parser() -> lark.Lark:
         grammar_path("vrml.lark").read_text(encoding="utf-8"),
         parser="lalr",
         lexer="contextual",
-        start=["world", "proto_file", "proto_head", "value_only"],
+        start=["world", "proto_file", "proto_head", "value_only", "proto_body"],
         transformer=_BUILDER,
         cache=True,
         maybe_placeholders=False,
@@ -247,3 +250,9 @@ def parse_file(path: str | Path) -> s.FileSyntax:
 def parse_value(text: str, path: str = "<value>") -> s.Value:
     """Parse one field value written as VRML text (used by the schema and by tests)."""
     return _run(text, "value_only", path)
+
+
+def parse_body(text: str, path: str, line: int = 1, column: int = 1) -> list[s.NodeSyntax | s.Use]:
+    """Parse a PROTO body (`{ node }`, e.g. a rendered template) whose text starts at line:column."""
+    padded = "\n" * (line - 1) + " " * (column - 1) + text
+    return [item for item in _run(padded, "proto_body", path) if not isinstance(item, s.ProtoSyntax)]

@@ -1,0 +1,338 @@
+"""Expand PROTO instances into built-in nodes: interface values, IS links, templates, nesting.
+
+For each instance: resolve the PROTO (`wbtc.proto.resolve`), type the instance's values against
+the interface (unknown fields get a "did you mean"), fill the defaults, render the body when it is
+a template, build the body in its own DEF scope, replace every `IS` by the interface value, and
+expand what the body holds (derived PROTOs, nested instances) with the PROTO file's own resolver.
+An unresolved PROTO is a warning and the node is left out (`strict` makes it an error).
+
+Not honoured yet: re-expansion when a field changes at run time (supervisor, issue 7), and the
+`hidden` state lines of instances (saved joint positions and velocities are ignored).
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
+from wbtc.proto.model import InterfaceField, ProtoModel, load_proto
+from wbtc.proto.resolve import ProtoSource, Resolver
+from wbtc.scene.build import NodeBuilder
+from wbtc.scene.model import Node, Scene, walk
+from wbtc.schema.registry import suggest
+from wbtc.vrml import syntax as s
+from wbtc.vrml.parser import parse_body
+from wbtc.vrml.values import coerce, format_value
+
+#: Deeper nesting than this is taken for a PROTO that contains itself.
+MAX_DEPTH = 40
+
+
+@dataclass(slots=True)
+class Typed:
+    """A value already typed by an outer PROTO, passed by IS into a nested instance's field."""
+
+    type: str
+    value: Any
+    span: Span | None = None
+
+
+@dataclass(slots=True)
+class ProtoInstance:
+    """What an expanded root node remembers about the instance it came from."""
+
+    name: str
+    source: ProtoSource
+    values: dict[str, Any]
+    span: Span
+    def_name: str | None = None
+    inner: ProtoInstance | None = None
+
+
+@dataclass(slots=True)
+class Expansion:
+    """What expanding a scene found: PROTO sources, counts of instances written in the world."""
+
+    sources: dict[str, ProtoSource | None] = field(default_factory=dict)
+    counts: Counter[str] = field(default_factory=Counter)
+    warnings: list[Diagnostic] = field(default_factory=list)
+    errors: list[Diagnostic] = field(default_factory=list)
+    console: list[str] = field(default_factory=list)
+
+
+def _is_node(value: Any) -> bool:
+    return isinstance(value, Node)
+
+
+class Expander:
+    """Expands every PROTO instance of one world."""
+
+    def __init__(self, scene: Scene, strict: bool = False) -> None:
+        self.scene = scene
+        self.world_path = Path(scene.path)
+        self.strict = strict
+        self.result = Expansion()
+        self._memo: dict[int, Node | None] = {}
+        self._resolvers: dict[Path, Resolver] = {}
+        self._depth = 0
+        self._next_id = 1
+
+    # --- traversal -----------------------------------------------------------------------------
+
+    def expand_list(self, nodes: list[Any], resolver: Resolver) -> list[Node]:
+        """Expand each node of a list, dropping the ones left out."""
+        out = []
+        for node in nodes:
+            expanded = self.expand(node, resolver)
+            if expanded is not None:
+                out.append(expanded)
+        return out
+
+    def expand(self, node: Node, resolver: Resolver, top_level: bool = False) -> Node | None:
+        """The built-in node tree for `node` (itself, with its subtree expanded, if built in)."""
+        key = id(node)
+        if key in self._memo:
+            return self._memo[key]
+        if node.is_proto:
+            if top_level:
+                self.result.counts[node.type_name] += 1
+            result = self._instantiate(node, resolver, top_level)
+        else:
+            self._memo[key] = node  # before the children: a USE below refers back to this node
+            self._expand_fields(node, resolver, top_level)
+            result = node
+        self._memo[key] = result
+        return result
+
+    def _expand_fields(self, node: Node, resolver: Resolver, top_level: bool) -> None:
+        for name, value in node.fields.items():
+            if isinstance(value, Node):
+                node.fields[name] = self.expand(value, resolver, top_level)
+            elif isinstance(value, list) and value and isinstance(value[0], Node):
+                node.fields[name] = [n for n in (self.expand(v, resolver, top_level) for v in value) if n]
+
+    def resolver_for(self, model: ProtoModel) -> Resolver:
+        """The resolver of a PROTO file (its own EXTERNPROTO lines, the world's project)."""
+        resolver = self._resolvers.get(model.path)
+        if resolver is None:
+            resolver = Resolver(model.path, model.file.externprotos, self.world_path)
+            self._resolvers[model.path] = resolver
+        return resolver
+
+    # --- one instance --------------------------------------------------------------------------
+
+    def _instantiate(self, node: Node, resolver: Resolver, top_level: bool) -> Node | None:
+        source = resolver.resolve(node.type_name)
+        self.result.sources.setdefault(node.type_name, source)
+        if source is None:
+            self._unresolved(node, resolver)
+            return None
+        model = load_proto(source.path)
+        if self._depth >= MAX_DEPTH:
+            raise ProtoError(f"PROTO {node.type_name} nests itself more than {MAX_DEPTH} levels deep", node.span)
+        self._depth += 1
+        try:
+            root = self._build_instance(node, model, source, resolver, top_level)
+        finally:
+            self._depth -= 1
+        return root
+
+    def _unresolved(self, node: Node, resolver: Resolver) -> None:
+        places = "; ".join(resolver.searched(node.type_name))
+        message = f"unknown PROTO '{node.type_name}': the node is left out of the simulation"
+        diag = Diagnostic(message, node.span, "error" if self.strict else "warning", hint=f"searched: {places}")
+        (self.result.errors if self.strict else self.result.warnings).append(diag)
+
+    def _build_instance(self, node: Node, model: ProtoModel, source: ProtoSource, resolver: Resolver,
+                        top_level: bool) -> Node | None:
+        proto_resolver = self.resolver_for(model)
+        values, defaults = self._values(node, model, resolver, proto_resolver)
+        fields = self._template_fields(model, values, defaults, resolver) if model.is_template else None
+        for name, value in values.items():
+            if model.fields[name].has_nodes:
+                # Values written with the instance resolve PROTOs where the instance was written;
+                # defaults where the PROTO was.
+                own = name in node.fields
+                values[name] = self._expand_value(value, resolver if own else proto_resolver, top_level and own)
+        body = self._render(model, fields, node) if fields is not None else model.syntax.body
+        builder = NodeBuilder(str(model.path), model.version, in_proto=True)
+        roots = builder.build(body)
+        self._collect(builder, model)
+        if not roots:
+            return None
+        created = list(walk(roots))
+        for made in created:
+            made.origin = node.span
+            self._link(made, model, values)
+        expanded = self.expand(roots[0], proto_resolver)
+        if expanded is not None:
+            info = ProtoInstance(node.type_name, source, values, node.span, node.def_name, expanded.proto)
+            expanded.proto = info
+            if node.def_name is not None:
+                expanded.def_name = node.def_name
+        return expanded
+
+    def _expand_value(self, value: Any, resolver: Resolver, top_level: bool) -> Any:
+        if isinstance(value, Node):
+            return self.expand(value, resolver, top_level)
+        if isinstance(value, list):
+            return [n for n in (self.expand(v, resolver, top_level) for v in value) if n is not None]
+        return value
+
+    def _template_fields(self, model: ProtoModel, values: dict[str, Any], defaults: dict[str, Any],
+                         resolver: Resolver) -> dict[str, dict[str, Any]]:
+        from wbtc.proto.jsvalues import to_template_value
+
+        return {name: {"value": to_template_value(values[name], model.fields[name].type, self, resolver),
+                       "defaultValue": to_template_value(defaults[name], model.fields[name].type, self,
+                                                         self.resolver_for(model))}
+                for name in model.fields}
+
+    def _collect(self, builder: NodeBuilder, model: ProtoModel) -> None:
+        for diag in builder.errors:
+            self.result.errors.append(replace(diag, message=f"in PROTO {model.name}: {diag.message}"))
+        self.result.warnings.extend(builder.warnings)
+
+    def _values(self, node: Node, model: ProtoModel, resolver: Resolver,
+                proto_resolver: Resolver) -> tuple[dict[str, Any], dict[str, Any]]:
+        values: dict[str, Any] = {}
+        for name, raw in node.fields.items():
+            interface = model.fields.get(name)
+            if interface is None:
+                close = suggest(name, model.fields)
+                self.result.errors.append(Diagnostic(
+                    f"unknown field '{name}' in PROTO {model.name}", node.field_spans.get(name, node.span),
+                    hint=f"did you mean '{close}'?" if close else None))
+                continue
+            typed = self._typed(raw, interface, model, node.field_spans.get(name, node.span))
+            if typed is not _FAILED:
+                values[name] = typed
+        defaults = {}
+        for name, interface in model.fields.items():
+            defaults[name] = self._default(interface, model, proto_resolver)
+            if name not in values:
+                values[name] = defaults[name]
+        return values, defaults
+
+    def _typed(self, raw: Any, interface: InterfaceField, model: ProtoModel, span: Span) -> Any:
+        if isinstance(raw, Typed):
+            if raw.type != interface.type:
+                self.result.errors.append(Diagnostic(
+                    f"IS links a {raw.type} to field '{interface.name}' of PROTO {model.name}, "
+                    f"which is an {interface.type}", raw.span or span))
+                return _FAILED
+            return raw.value
+        try:
+            typed = coerce(raw, interface.type, f"field '{interface.name}' of PROTO {model.name}", _is_node)
+        except SchemaError as exc:
+            self.result.errors.append(Diagnostic(exc.message, exc.span or span))
+            return _FAILED
+        if interface.allowed is not None and not interface.type.startswith("MF") and typed not in interface.allowed:
+            shown = ", ".join(format_value(a, interface.type) for a in interface.allowed)
+            self.result.warnings.append(Diagnostic(
+                f"{format_value(typed, interface.type)} is not an allowed value of field '{interface.name}' of "
+                f"PROTO {model.name} (allowed: {shown})", span, "warning"))
+        return typed
+
+    def _default(self, interface: InterfaceField, model: ProtoModel, proto_resolver: Resolver) -> Any:
+        if not interface.has_nodes:
+            return interface.default
+        builder = NodeBuilder(str(model.path), model.version)
+        raw = builder.value(interface.default)
+        self._collect(builder, model)
+        return coerce(raw, interface.type, f"default of field '{interface.name}'", _is_node)
+
+    def _link(self, made: Node, model: ProtoModel, values: dict[str, Any]) -> None:
+        for name, value in list(made.fields.items()):
+            if not isinstance(value, s.IsRef):
+                continue
+            interface = model.fields.get(value.name)
+            if interface is None:
+                close = suggest(value.name, model.fields)
+                self.result.errors.append(Diagnostic(
+                    f"IS {value.name}: PROTO {model.name} has no such field", value.span,
+                    hint=f"did you mean '{close}'?" if close else None))
+                del made.fields[name]
+                continue
+            linked = values.get(value.name)
+            if made.is_proto:
+                made.fields[name] = Typed(interface.type, linked, value.span)
+                continue
+            own = made.schema.field(name) if made.schema else None
+            if own is not None and own.type != interface.type:
+                self.result.errors.append(Diagnostic(
+                    f"IS links field '{name}' of {made.type_name} ({own.type}) to PROTO field '{value.name}' "
+                    f"({interface.type}): the types must be the same", value.span))
+                del made.fields[name]
+                continue
+            made.fields[name] = list(linked) if isinstance(linked, list) else linked
+
+    # --- templates -----------------------------------------------------------------------------
+
+    def _render(self, model: ProtoModel, fields: dict[str, dict[str, Any]], node: Node) -> list[s.NodeSyntax | s.Use]:
+        from wbtc.proto.template import render_template
+
+        context = self._context(model)
+        span = model.syntax.template_span
+        assert span is not None and model.syntax.template is not None
+        text, console = render_template(model.syntax.template, language=model.syntax.template_language or "javascript",
+                                        fields=fields, context=context, proto_path=str(model.path),
+                                        body_line=span.line, body_column=span.column)
+        self.result.console.extend(f"{model.name}: {line}" for line in console)
+        try:
+            return parse_body(text, str(model.path), span.line, span.column)
+        except WbtcError as exc:
+            raise ProtoError(f"the template of PROTO {model.name} produced invalid VRML: {exc.message}",
+                             exc.span, hint=f"instance at {node.span}") from None
+
+    def _context(self, model: ProtoModel) -> dict[str, Any]:
+        self._next_id += 1
+        world = self.world_path.resolve()
+        project = world.parent.parent if world.parent.name == "worlds" else world.parent
+        version = str(self.scene.version) if self.scene.version.major > 1000 else "R2025a"
+        return {
+            "world": str(world), "proto": str(model.path), "project_path": str(project),
+            "coordinate_system": self.scene.coordinate_system,
+            "webots_version": {"major": version.split()[0], "revision": "0"},
+            "webots_home": "", "temporary_files_path": "/tmp", "os": "linux", "id": self._next_id,
+        }
+
+
+_FAILED = object()
+
+
+def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:
+    """Expand every PROTO instance of a scene into built-in nodes.
+
+    Args:
+        scene: the typed scene of a world.
+        strict: make unresolved PROTOs errors instead of warnings.
+
+    Returns:
+        The scene holding only built-in nodes, and what the expansion found.
+
+    Raises:
+        ProtoError: with every error found (unknown PROTO fields, bad values, template errors).
+    """
+    expander = Expander(scene, strict)
+    resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
+    nodes = []
+    for node in scene.nodes:
+        expanded = expander.expand(node, resolver, top_level=True)
+        if expanded is not None:
+            nodes.append(expanded)
+    result = expander.result
+    if result.errors:
+        raise ProtoError("", diagnostics=result.errors[:40])
+    expanded_scene = replace(scene, nodes=nodes, warnings=scene.warnings + result.warnings)
+    return expanded_scene, result
+
+
+def as_array(value: Any) -> Any:
+    """Numpy arrays as nested lists (for templates and JSON)."""
+    return value.tolist() if isinstance(value, np.ndarray) else value
