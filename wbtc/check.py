@@ -92,21 +92,23 @@ def _nodes(value: object) -> Iterator[Node]:
             yield from _nodes(item)
 
 
-def check_report(scene: Scene, proto_source: Callable[[str], str | None] | None = None) -> CheckReport:
+def check_report(scene: Scene, proto_counts: Counter[str] | None = None,
+                 proto_source: Callable[[str], str | None] | None = None) -> CheckReport:
     """Summarise a scene for `wbtc check`.
 
     Args:
         scene: the scene (after PROTO expansion when available, so PROTO robots show their devices).
+        proto_counts: instances of each PROTO written in the world (counted from the scene if None).
         proto_source: maps a PROTO name to where it resolved; None while PROTOs are not resolved.
 
     Returns:
         The report.
     """
     robots = []
-    protos: Counter[str] = Counter()
+    counted: Counter[str] = Counter()
     for node in scene.walk():
         if node.is_proto:
-            protos[node.type_name] += 1
+            counted[node.type_name] += 1
         if node.is_a("Robot"):
             devices = [DeviceInfo(name=str(d.get("name")), type=d.base_type) for d in robot_devices(node)]
             robots.append(RobotInfo(name=str(node.get("name")), controller=str(node.get("controller")),
@@ -118,7 +120,8 @@ def check_report(scene: Scene, proto_source: Callable[[str], str | None] | None 
         coordinate_system=scene.coordinate_system,
         nodes=scene.node_count,
         robots=robots,
-        protos=[ProtoInfo(name=n, count=c, source=source(n)) for n, c in sorted(protos.items())],
+        protos=[ProtoInfo(name=n, count=c, source=source(n))
+                for n, c in sorted((proto_counts if proto_counts is not None else counted).items())],
         warnings=[str(w) for w in scene.warnings],
     )
 

@@ -58,16 +58,19 @@ def _guard(action: Callable[[], T]) -> T:
 def check(
     world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
     json_output: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
+    strict: Annotated[bool, typer.Option("--strict", help="Unresolved PROTOs are errors.")] = False,
 ) -> None:
     """Say what is in a world (version, axes, robots, devices, PROTOs) and what is wrong with it."""
     from wbtc.check import check_report, format_report
+    from wbtc.proto.expand import expand_scene
     from wbtc.scene import build_scene
     from wbtc.vrml import parse_file
 
     if not world.is_file():
         _guard(lambda: _missing(world))
-    scene = _guard(lambda: build_scene(parse_file(world)))
-    report = check_report(scene)
+    scene, expansion = _guard(lambda: expand_scene(build_scene(parse_file(world)), strict=strict))
+    sources = expansion.sources
+    report = check_report(scene, expansion.counts, lambda n: sources[n].label if sources.get(n) else None)
     if json_output:
         typer.echo(report.model_dump_json())
         return

@@ -12,8 +12,11 @@ Not honoured yet: re-expansion when a field changes at run time (supervisor, iss
 
 from __future__ import annotations
 
+import json
+import re
 from collections import Counter
 from dataclasses import dataclass, field, replace
+from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -77,7 +80,7 @@ class Expander:
         self.world_path = Path(scene.path)
         self.strict = strict
         self.result = Expansion()
-        self._memo: dict[int, Node | None] = {}
+        self._memo: dict[int, tuple[Node, Node | None]] = {}
         self._resolvers: dict[Path, Resolver] = {}
         self._depth = 0
         self._next_id = 1
@@ -96,17 +99,19 @@ class Expander:
     def expand(self, node: Node, resolver: Resolver, top_level: bool = False) -> Node | None:
         """The built-in node tree for `node` (itself, with its subtree expanded, if built in)."""
         key = id(node)
-        if key in self._memo:
-            return self._memo[key]
+        known = self._memo.get(key)
+        if known is not None and known[0] is node:
+            return known[1]
         if node.is_proto:
             if top_level:
                 self.result.counts[node.type_name] += 1
             result = self._instantiate(node, resolver, top_level)
         else:
-            self._memo[key] = node  # before the children: a USE below refers back to this node
+            self._memo[key] = (node, node)  # before the children: a USE below refers back to this node
             self._expand_fields(node, resolver, top_level)
             result = node
-        self._memo[key] = result
+        # The node is kept in the memo with its result so that its id is never reused meanwhile.
+        self._memo[key] = (node, result)
         return result
 
     def _expand_fields(self, node: Node, resolver: Resolver, top_level: bool) -> None:
@@ -264,6 +269,11 @@ class Expander:
                 made.fields[name] = Typed(interface.type, linked, value.span)
                 continue
             own = made.schema.field(name) if made.schema else None
+            if own is not None and own.type == "MF" + interface.type[2:] and interface.type.startswith("SF"):
+                # Old Webots had SF versions of some fields (controllerArgs): one value makes a list.
+                made.fields[name] = coerce(s.MFList([], value.span), own.type, name, _is_node) if linked is None \
+                    else _one_element(linked, own.type)
+                continue
             if own is not None and own.type != interface.type:
                 self.result.errors.append(Diagnostic(
                     f"IS links field '{name}' of {made.type_name} ({own.type}) to PROTO field '{value.name}' "
@@ -280,10 +290,19 @@ class Expander:
         context = self._context(model)
         span = model.syntax.template_span
         assert span is not None and model.syntax.template is not None
+        # Webots re-generates a template only when a field it reads changes: the text depends on the
+        # fields the template names (and the context), so instances that agree on those share it.
+        read = _fields_read(model.syntax.template)
+        key = (model.path, json.dumps({k: v for k, v in fields.items() if k in read}, sort_keys=True, default=str),
+               context["coordinate_system"], "context.id" in model.syntax.template and context["id"])
+        cached = _RENDERED.get(key)
+        if cached is not None:
+            return parse_body(cached, str(model.path), span.line, span.column)
         text, console = render_template(model.syntax.template, language=model.syntax.template_language or "javascript",
                                         fields=fields, context=context, proto_path=str(model.path),
                                         body_line=span.line, body_column=span.column)
         self.result.console.extend(f"{model.name}: {line}" for line in console)
+        _RENDERED[key] = text
         try:
             return parse_body(text, str(model.path), span.line, span.column)
         except WbtcError as exc:
@@ -304,6 +323,19 @@ class Expander:
 
 
 _FAILED = object()
+_RENDERED: dict[tuple[Any, ...], str] = {}
+_FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
+
+
+@lru_cache(maxsize=256)
+def _fields_read(template: str) -> frozenset[str]:
+    return frozenset(_FIELD_NAMES.findall(template))
+
+
+def _one_element(value: Any, mf_type: str) -> Any:
+    if mf_type in ("MFString", "MFBool", "MFNode"):
+        return [value]
+    return np.asarray([value], dtype=np.int64 if mf_type == "MFInt32" else np.float64)
 
 
 def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:

@@ -76,10 +76,13 @@ def _interface(proto: s.ProtoSyntax, path: Path) -> dict[str, InterfaceField]:
                 raise ProtoError(f"in PROTO {proto.name}: {exc.message}", exc.span) from None
         allowed = None
         if decl.restriction is not None and not decl.type.endswith("Node"):
-            elem = "SF" + decl.type[2:]
-            allowed = [coerce(item, elem, f"restriction of '{decl.name}'", _not_node) for item in decl.restriction]
-            if elem in ("SFVec2f", "SFVec3f", "SFColor", "SFRotation") and len(decl.restriction) == 1:
-                allowed = list(map(tuple, coerce(decl.restriction[0], "MF" + decl.type[2:], "", _not_node)))
+            # The allowed values are a list of SF values; numbers may be written as one run.
+            listed = coerce(s.MFList(decl.restriction, decl.span), "MF" + decl.type[2:],
+                            f"restriction of '{decl.name}'", _not_node)
+            allowed = [tuple(v) if isinstance(v, list) else v for v in
+                       (listed.tolist() if hasattr(listed, "tolist") else listed)]
+            if decl.type in ("SFVec2f", "SFVec3f", "SFColor", "SFRotation"):
+                allowed = [type(default)(*v) for v in allowed]
         fields[decl.name] = InterfaceField(decl, default, allowed)
     return fields
 
