@@ -153,6 +153,13 @@ def test_field_values_are_rounded_to_six_digits_like_webots():
     assert text == "0.123457 1234570 0.666667 1234567"
 
 
+def test_numpy_values_are_accepted():
+    np = pytest.importorskip("numpy")
+    body = "%<= fields.a.value >% %<= fields.a.defaultValue >% %<= fields.b.value.length >% %<= fields.c.value >%"
+    fields = {"a": field(np.float64(0.5), np.int64(3)), "b": field(np.array([1.0, 2.0])), "c": field(np.bool_(True))}
+    assert js(body, fields)[0] == "0.5 3 2 true"
+
+
 def test_string_fields_are_read_as_javascript_literals():
     body = "%<= fields.s.value.length >%|%<= fields.q.value >%|%<= fields.t.value.replace(/\\s+/g, '_') >%"
     text, _ = js(body, {"s": field("a\\nb"), "q": field("it's \"quoted\""), "t": field("dark strip")})
@@ -394,6 +401,9 @@ def test_bodies_that_webots_does_not_treat_as_templates_are_unchanged():
     body = '{\n  ImageTexture { url [ "%<= fields.x.value >%" ] }  # %< not code >%\n}\n'
     assert not is_procedural(body, "javascript")
     assert js(body) == (body, [])
+    output = evaluate_template(body, language="javascript", fields={}, context={}, proto_path="/p/T.proto",
+                               body_line=7)
+    assert output.line_map == [7, 8, 9, 10]
     assert is_procedural("{\n  Box { size %<= 1 >% 1 1 }\n}", "javascript")
 
 

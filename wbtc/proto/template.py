@@ -90,7 +90,8 @@ def evaluate_template(body: str, *, language: str, fields: dict[str, dict], cont
 
     Returns:
         A `TemplateOutput`. A body that Webots would not treat as a template (no statement
-        outside strings and comments, see `is_procedural`) is returned unchanged.
+        outside strings and comments, see `is_procedural`) is returned unchanged, with an
+        identity line map.
 
     Raises:
         ProtoError: as for `render_template`.
@@ -101,7 +102,7 @@ def evaluate_template(body: str, *, language: str, fields: dict[str, dict], cont
         raise ValueError(f"unknown template language {language!r} (expected 'javascript' or 'lua')")
     source = strip_lua_vrml_comments(body) if key == "lua" else body
     if not is_procedural(source, key):
-        return TemplateOutput(body)
+        return TemplateOutput(body, line_map=[body_line + i for i in range(body.count("\n") + 1)])
 
     # Comment stripping only shortens lines, so offsets in `source` give the file's lines/columns.
     source_map = SourceMap(source, proto_path, body_line, body_column)

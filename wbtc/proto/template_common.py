@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import bisect
 import math
+import numbers
 import platform
 import re
 from dataclasses import dataclass, field
@@ -83,8 +84,7 @@ class TemplateOutput:
             Lua: errors then output).
         line_map: for each line of ``text`` (index 0 = first line), the PROTO file line it comes
             from: a text line maps to its own line, an expression value to the line of its
-            statement. Empty when the body was not evaluated (``text`` is then the body itself,
-            so its lines are the body's lines).
+            statement.
     """
 
     text: str
@@ -498,6 +498,28 @@ def _find_lua_close(src: str, i: int, comments: list[tuple[int, int]]) -> int:
 
 # --------------------------------------------------------------------------------------------
 # Field values and context
+
+
+def plain_value(value: object) -> object:
+    """A field or context value reduced to Python builtins (numpy scalars and arrays included).
+
+    Raises:
+        TypeError: the value has no template equivalent.
+    """
+    if value is None or isinstance(value, (bool, str)):
+        return value
+    if isinstance(value, numbers.Integral):
+        return int(value)
+    if isinstance(value, numbers.Real):
+        return float(value)
+    if isinstance(value, dict):
+        return {str(key): plain_value(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [plain_value(item) for item in value]
+    tolist = getattr(value, "tolist", None)  # numpy arrays and scalars such as numpy.bool_
+    if callable(tolist):
+        return plain_value(tolist())
+    raise TypeError(f"cannot pass a {type(value).__name__} to a template")
 
 
 def qt_double(value: float) -> float:

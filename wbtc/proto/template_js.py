@@ -5,9 +5,12 @@ How a body becomes JavaScript, after Webots' ``WbTemplateEngine::generateJavascr
 * plain text is appended as a template literal, ``___vrml += render(`...`);`` -- so, exactly as
   in Webots, ``${...}`` in the VRML text is interpolated and backslash escapes are processed
   (wbtc only escapes backquotes, which would end the literal);
-* ``%<= expr >%`` becomes ``___tmp = expr; ___vrml += ___tmp;``, i.e. the value's JavaScript
-  string form (``0.1 + 0.2`` -> ``0.30000000000000004``, ``true`` -> ``true``);
+* ``%<= expr >%`` becomes ``___tmp = expr;`` followed by appending ``___tmp``, i.e. the value's
+  JavaScript string form (``0.1 + 0.2`` -> ``0.30000000000000004``, ``true`` -> ``true``);
 * ``%< code >%`` is inserted as is, except ``import`` statements, which are hoisted.
+
+Every append also goes through ``__wbmark``, which records the template line of the piece for
+`TemplateOutput.line_map` and returns the piece's string form (so the text is unchanged).
 
 Everything runs inside one strict-mode function, so ``fields``, ``context``, ``console``,
 ``wbfile`` and the imported modules are visible everywhere. The generated function keeps the
@@ -31,6 +34,7 @@ from pathlib import Path
 
 import quickjs
 
+from wbtc.errors import ProtoError, Span
 from wbtc.proto.template_common import (
     Chunk,
     SourceMap,
@@ -38,6 +42,7 @@ from wbtc.proto.template_common import (
     js_string_value,
     line_map,
     number,
+    plain_value,
     proto_error,
 )
 
@@ -176,7 +181,7 @@ class JsEngine:
         self._state.proto_dir = str(Path(proto_path).parent) if proto_path else ""
         self._set_time_limit(None if uses_wbfile else TIME_LIMIT)
         try:
-            raw = self._run(template_id, _js_literal(fields), json.dumps(context))
+            raw = self._run(template_id, _js_literal(plain_value(fields)), json.dumps(plain_value(context)))
         except quickjs.JSException as exc:
             # Only uncatchable conditions get here (the time-limit interrupt): rebuild the
             # error record from the exception text, "Name: message\n    at f (<input>:N)...".
@@ -254,7 +259,8 @@ class JsEngine:
 
         return _TEMPLATE_IMPORT.sub(replace, code)
 
-    def _binding(self, match: re.Match[str], span, proto_path: str) -> str:
+    def _binding(self, match: re.Match[str], span: Span, proto_path: str) -> str:
+        """The constant declaration that replaces one import statement."""
         spec = match.group("spec")
         name = _module_name(spec)
         if name == "wbfile.js":
@@ -286,7 +292,8 @@ class JsEngine:
         raise proto_error(f"module '{name}' has no default export (use `import * as X from '{spec}'`)",
                           proto_path, span)
 
-    def _error(self, error: dict, source_map: SourceMap, chunks: list[Chunk], proto_path: str):
+    def _error(self, error: dict, source_map: SourceMap, chunks: list[Chunk], proto_path: str) -> ProtoError:
+        """The ProtoError for an engine error record (name, message, stack, line)."""
         name = error.get("name") or ""
         message = str(error.get("message") or "")
         # QuickJS quotes the name ("'foo' is not defined"); Webots' engine does not.
@@ -319,6 +326,7 @@ class JsEngine:
 
 
 def _exception_record(exc: quickjs.JSException) -> dict:
+    """An error record like the prelude's __wberror, from an exception QuickJS did not let JS catch."""
     text = str(exc.args[0] if exc.args else exc)
     head, _, stack = text.partition("\n")
     name, separator, message = head.partition(": ")

@@ -28,6 +28,7 @@ import threading
 from collections import OrderedDict
 from pathlib import Path
 
+from wbtc.errors import ProtoError
 from wbtc.proto.template_common import (
     Chunk,
     SourceMap,
@@ -36,6 +37,7 @@ from wbtc.proto.template_common import (
     line_map,
     lua_string_value,
     number,
+    plain_value,
     proto_error,
 )
 
@@ -61,7 +63,9 @@ class LuaEngine:
     """A Lua runtime with the prelude and the template modules loaded."""
 
     def __init__(self) -> None:
-        self._runtime = _lupa.LuaRuntime(unpack_returned_tuples=True)
+        # No `python` object in Lua: templates have no business reaching into the host.
+        self._runtime = _lupa.LuaRuntime(unpack_returned_tuples=True, register_eval=False,
+                                         register_builtins=False)
         self._runtime.execute((_LUA_DIR / "_prelude.lua").read_text(encoding="utf-8"))
         # Item access: attribute names starting with "__" would be mangled inside the class.
         lua_globals = self._runtime.globals()
@@ -116,7 +120,7 @@ class LuaEngine:
         return TemplateOutput(text, stdout, stderr, stderr + stdout, line_map(numbers, text, source_map))
 
     def _table(self, value: object) -> object:
-        return self._runtime.table_from(_lua_value(value), recursive=True)
+        return self._runtime.table_from(_lua_value(plain_value(value)), recursive=True)
 
 
 def _lua_value(value: object) -> object:
@@ -228,7 +232,7 @@ def _lua_quote(text: str) -> str:
 
 
 def _error(message: str, line: int | None, source_map: SourceMap, chunks: list[Chunk],
-           proto_path: str):
+           proto_path: str) -> ProtoError:
     # Compile errors and errors raised in template code carry "wbtemplate:LINE: " in front.
     prefix = "wbtemplate:"
     if message.startswith(prefix):
