@@ -35,13 +35,15 @@ def test_corpus_world_expands(world) -> None:
     assert missing <= set(LISTED), f"unresolved and not listed in tests/proto/unresolved.txt: {missing - set(LISTED)}"
 
 
-def test_unresolved_instances_do_not_grow() -> None:
-    # Issue 3 aims at 10 %; today 418 of 3,279 instances (12.7 %) stay unresolved, 297 of them the
-    # Erebus worldTile project PROTO the corpus does not ship. This bound only keeps it from growing.
+def test_unresolved_instances_stay_under_ten_percent() -> None:
+    # Issue 3: at most 10 % of the PROTO instances may stay unresolved. The Erebus rescue-maze tiles and
+    # markers (worldTile, halfTile, Victim, HazardMap: 329 instances) now come from wbtc's library; what is
+    # left is listed in unresolved.txt. The exact count makes any change (better or worse) show up here.
     if not _TOTALS:  # run alone: expand the corpus here
         for world in WORLDS:
             test_corpus_world_expands(world)
     total, unresolved = sum(_TOTALS.values()), sum(_UNRESOLVED.values())
     assert total == 3279
-    assert unresolved <= 418, f"{unresolved}/{total} PROTO instances unresolved"
+    assert unresolved == 89, f"{unresolved}/{total} PROTO instances unresolved: {_UNRESOLVED.most_common()}"
+    assert unresolved / total <= 0.10
     assert _MISSING == set(LISTED), "tests/proto/unresolved.txt lists a PROTO that now resolves"
