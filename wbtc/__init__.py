@@ -1,0 +1,25 @@
+"""wbtc: Webots worlds and their Python controllers, run in MuJoCo.
+
+The pipeline's stages are plain functions (see README's architecture section):
+`wbtc.vrml.parse_file` → `wbtc.scene.build_scene` → `wbtc.proto.expand.expand_scene` →
+`wbtc.compile.compiler.compile_scene` → `wbtc.runtime.simulation.Simulation`;
+`wbtc.pipeline` chains them.
+"""
+
+from __future__ import annotations
+
+import ctypes.util
+import os
+
+
+def _choose_headless_gl() -> None:
+    """Without a display, pick headless OpenGL before MuJoCo is imported: EGL, else OSMesa."""
+    if os.environ.get("MUJOCO_GL") or os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"):
+        return
+    if os.name != "posix" or os.uname().sysname == "Darwin":
+        return  # macOS and Windows render offscreen with their own GL
+    os.environ["MUJOCO_GL"] = "egl" if ctypes.util.find_library("EGL") else "osmesa"
+    os.environ.setdefault("PYOPENGL_PLATFORM", os.environ["MUJOCO_GL"])
+
+
+_choose_headless_gl()

@@ -77,6 +77,49 @@ def check(
     typer.echo(format_report(report))
 
 
+@app.command("compile")
+def compile_command(
+    world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="The MJCF file to write.")] = None,
+    strict: Annotated[bool, typer.Option("--strict", help="Unhonoured fields and unresolved PROTOs are errors.")]
+    = False,
+    substep: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+) -> None:
+    """Compile a world to a MuJoCo model (MJCF), with its textures beside it."""
+    from wbtc.compile.context import CompileOptions
+    from wbtc.compile.output import write_mjcf
+    from wbtc.pipeline import compile_world
+
+    out = output or world.with_suffix(".xml")
+    result, expansion = _guard(lambda: compile_world(world, CompileOptions(max_substep_ms=substep, strict=strict)))
+    _print_diagnostics(expansion.warnings + result.warnings)
+    _guard(lambda: write_mjcf(result.spec, out))
+    typer.echo(f"{out}: {result.summary()}")
+
+
+@app.command()
+def run(
+    world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
+    duration: Annotated[float | None, typer.Option("--duration", help="Simulated seconds to run.")] = None,
+    headless: Annotated[bool, typer.Option("--headless", help="No viewer, even with a display.")] = False,
+    realtime: Annotated[bool, typer.Option("--realtime", help="Run no faster than real time.")] = False,
+    seed: Annotated[int | None, typer.Option("--seed", help="Seed of sensor noise (default: randomSeed).")] = None,
+    json_output: Annotated[bool, typer.Option("--json", help="Print one JSON object at the end.")] = False,
+    trace: Annotated[Path | None, typer.Option("--trace", help="Write every robot's pose to a CSV file.")] = None,
+    keys: Annotated[Path | None, typer.Option("--keys", help="Replay timed key presses (`time_s key` lines).")]
+    = None,
+    physics_step: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+    no_noise: Annotated[bool, typer.Option("--no-noise", help="Turn sensor noise off.")] = False,
+) -> None:
+    """Simulate a world and run its robots' Python controllers."""
+    from wbtc.runtime.launch import launch
+
+    code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,
+                                 json_output=json_output, trace=trace, keys=keys, physics_step=physics_step,
+                                 noise=not no_noise, warn=_print_diagnostics))
+    raise typer.Exit(code)
+
+
 def _missing(path: Path) -> None:
     raise WbtcError(f"no such world file: {path}")
 

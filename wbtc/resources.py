@@ -31,3 +31,8 @@ def protos_dir() -> Path:
     """The folder of wbtc's own PROTO library."""
     local = _CHECKOUT / "protos"
     return local if local.is_dir() else _data_dir("protos", "wbtc._protos")
+
+
+def child_path() -> Path:
+    """The folder put first on a controller process's PYTHONPATH (it holds the `controller` package)."""
+    return Path(__file__).resolve().parent / "_child"

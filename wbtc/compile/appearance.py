@@ -1,0 +1,141 @@
+"""Appearance, Material, PBRAppearance and ImageTexture to MuJoCo colours, materials and textures.
+
+A Shape's colour becomes its geom's rgba (MuJoCo multiplies a material's rgba by nothing else, so
+flat colours need no material); a texture becomes a MuJoCo 2D texture and material, the image
+converted to PNG and handed to MuJoCo through the spec's in-memory assets. Emissive colours are
+folded into the rgba with the material's `emission` so lit LEDs glow.
+
+Not honoured yet: Material `ambientIntensity`, `shininess` and `specularColor` beyond a rough
+specular; PBRAppearance maps other than `baseColorMap` (roughness, metalness, normal, occlusion,
+emissive maps), `IBLStrength`; TextureTransform `center`, `rotation` and `translation`;
+ImageTexture `filtering`.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+
+import mujoco
+import numpy as np
+
+from wbtc.compile import textures
+from wbtc.compile.context import CompileContext, info
+from wbtc.scene.model import Node
+
+_UNHONOURED = frozenset({"roughnessMap", "metalnessMap", "normalMap", "occlusionMap", "emissiveColorMap",
+                         "center", "filtering"})
+#: Webots' colour when a Shape has no appearance at all.
+DEFAULT_RGBA = np.array([1.0, 1.0, 1.0, 1.0])
+
+
+def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None, str | None]:
+    """The rgba, MuJoCo material name and texture image path of a Shape's appearance."""
+    appearance = shape.get("appearance")
+    if not isinstance(appearance, Node):
+        return DEFAULT_RGBA.copy(), None, None
+    ctx.unhonoured(appearance, _UNHONOURED)
+    if appearance.base_type == "PBRAppearance":
+        rgba, emission, texture_node = _pbr(appearance)
+        specular, shininess = 0.5 * (1 - float(appearance.get("roughness"))), 1 - float(appearance.get("roughness"))
+    else:
+        rgba, emission, texture_node = _phong(appearance)
+        specular, shininess = 0.3, 0.5
+    path = None
+    if isinstance(texture_node, Node) and texture_node.base_type == "ImageTexture":
+        urls = [str(u) for u in texture_node.get("url") or []]
+        path = textures.resolve_url(urls, texture_node.span.file)
+        if path is None and urls:
+            ctx.warn(f"the texture {urls[0]!r} cannot be found; the shape keeps its plain colour",
+                     texture_node.span)
+    if path is None and emission == 0.0:
+        return rgba, None, None
+    repeat = _texture_repeat(appearance)
+    name = _material(ctx, rgba, emission, specular, shininess, path, repeat, appearance)
+    if path is not None:
+        # A textured material carries the colour; the geom's rgba stays white so it does not tint twice.
+        return np.array([1.0, 1.0, 1.0, rgba[3]]), name, path
+    return rgba, name, None
+
+
+def _phong(appearance: Node) -> tuple[np.ndarray, float, Node | None]:
+    material = appearance.get("material")
+    texture = appearance.get("texture")
+    if not isinstance(material, Node):
+        # Webots draws a textured shape without a Material at full texture colour, and an
+        # untextured one white.
+        return DEFAULT_RGBA.copy(), 0.0, texture
+    diffuse = np.asarray(material.get("diffuseColor"), dtype=float)
+    emissive = np.asarray(material.get("emissiveColor"), dtype=float)
+    alpha = 1.0 - float(material.get("transparency"))
+    return _fold_emission(diffuse, emissive, alpha), _emission(diffuse, emissive), texture
+
+
+def _pbr(appearance: Node) -> tuple[np.ndarray, float, Node | None]:
+    base = np.asarray(appearance.get("baseColor"), dtype=float)
+    emissive = np.asarray(appearance.get("emissiveColor"), dtype=float) * float(appearance.get("emissiveIntensity"))
+    alpha = 1.0 - float(appearance.get("transparency"))
+    return _fold_emission(base, emissive, alpha), _emission(base, emissive), appearance.get("baseColorMap")
+
+
+def _fold_emission(diffuse: np.ndarray, emissive: np.ndarray, alpha: float) -> np.ndarray:
+    # MuJoCo's emission scales the rgba itself, so a glowing surface takes the brighter of its
+    # diffuse and emissive colours.
+    colour = np.clip(np.maximum(diffuse, emissive), 0.0, 1.0)
+    return np.concatenate([colour, [min(max(alpha, 0.0), 1.0)]])
+
+
+def _emission(diffuse: np.ndarray, emissive: np.ndarray) -> float:
+    return float(min(1.0, emissive.max())) if emissive.max() > 0 else 0.0
+
+
+def _texture_repeat(appearance: Node) -> tuple[float, float]:
+    transform = appearance.get("textureTransform")
+    if isinstance(transform, Node):
+        scale = transform.get("scale")
+        return float(scale[0]), float(scale[1])
+    return 1.0, 1.0
+
+
+def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: float, shininess: float,
+              path: str | None, repeat: tuple[float, float], node: Node) -> str:
+    key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat))
+    name = "mat_" + hashlib.sha1(key.encode()).hexdigest()[:10]
+    if ctx.spec.material(name) is not None:
+        return name
+    material = ctx.spec.add_material(name=name)
+    material.rgba = rgba if path is None else [1.0, 1.0, 1.0, rgba[3]]
+    material.emission = emission
+    material.specular = specular
+    material.shininess = shininess
+    material.texrepeat = list(repeat)
+    material.info = info(node)
+    if path is not None:
+        material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = _texture(ctx, path)
+    return name
+
+
+def _texture(ctx: CompileContext, path: str) -> str:
+    name = "tex_" + hashlib.sha1(path.encode()).hexdigest()[:10]
+    if ctx.spec.texture(name) is not None:
+        return name
+    file_name = f"{name}.png"
+    ctx.spec.assets[file_name] = _png_bytes(path)
+    texture = ctx.spec.add_texture(name=name, type=mujoco.mjtTexture.mjTEXTURE_2D)
+    texture.file = file_name
+    ctx.texture_paths[name] = path
+    return name
+
+
+def _png_bytes(path: str) -> bytes:
+    """The image at `path` as PNG bytes (MuJoCo reads PNG textures only)."""
+    from PIL import Image
+
+    texture = textures.load_texture(path)
+    if texture.alpha and texture.alpha_values is not None:
+        image = Image.fromarray(np.dstack([texture.rgb, texture.alpha_values]), "RGBA")
+    else:
+        image = Image.fromarray(texture.rgb, "RGB")
+    buffer = io.BytesIO()
+    image.save(buffer, format="PNG")
+    return buffer.getvalue()

@@ -1,0 +1,122 @@
+"""The compile stage: an expanded Scene to a MuJoCo MjSpec, its compiled MjModel and the DeviceTable.
+
+Top-level nodes are dispatched here (WorldInfo, Viewpoint and Background to `world`, everything
+else to the body builder in `solid`); MuJoCo's own compile errors are traced back to the world's
+line through each element's `info`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+
+from wbtc.compile import device, world
+from wbtc.compile.context import CompileContext, CompileOptions
+from wbtc.compile.solid import BodyBuilder
+from wbtc.compile.table import DeviceTable
+from wbtc.errors import CompileError, Diagnostic, Span
+from wbtc.scene.model import Node, Scene
+
+_SCENE_ONLY = frozenset({"WorldInfo", "Viewpoint", "Background", "Fog"})
+
+
+@dataclass
+class CompileResult:
+    """What compiling a scene gives.
+
+    Attributes:
+        spec: the MuJoCo spec (write MJCF with `spec.to_xml()`; textures are in `spec.assets`).
+        model: the compiled model.
+        table: the DeviceTable for the runtime.
+        warnings: Webots fields not honoured yet, unreadable files, approximations.
+    """
+
+    spec: mujoco.MjSpec
+    model: mujoco.MjModel
+    table: DeviceTable
+    warnings: list[Diagnostic] = field(default_factory=list)
+    texture_paths: dict[str, str] = field(default_factory=dict)
+
+    def summary(self) -> str:
+        """The one-line summary `wbtc compile` prints."""
+        m = self.model
+        devices = sum(len(r.devices) for r in self.table.robots)
+        return (f"{m.nbody - 1} bodies, {m.njnt} joints, {m.nu} actuators, {m.ngeom} geoms, "
+                f"{len(self.table.robots)} robots, {devices} devices")
+
+
+def compile_scene(scene: Scene, options: CompileOptions | None = None) -> CompileResult:
+    """Compile an expanded scene (PROTOs instantiated) into a MuJoCo model.
+
+    Args:
+        scene: the scene after `expand_scene`.
+        options: compiler options (substep length, strictness).
+
+    Returns:
+        The spec, the compiled model, the DeviceTable and the warnings.
+
+    Raises:
+        CompileError: MuJoCo rejects the model, or `strict` is set and a field is not honoured.
+    """
+    options = options or CompileOptions()
+    spec = mujoco.MjSpec()
+    spec.modelname = Path(scene.path).stem
+    spec.compiler.degree = False  # Webots writes radians; MjSpec would read joint ranges as degrees
+    ctx = CompileContext(scene=scene, spec=spec, options=options)
+    info_node = _first(scene, "WorldInfo")
+    world.setup_world(info_node, ctx)
+    root = world.root_frame(ctx.table.coordinate_system)
+    builder = BodyBuilder(ctx)
+    for node in scene.nodes:
+        kind = node.base_type
+        if kind == "Viewpoint":
+            world.add_viewpoint(node, ctx, root)
+        elif kind == "Background":
+            world.add_background(node, ctx)
+        elif kind not in _SCENE_ONLY:
+            builder.walk(node, spec.worldbody, root, None, False)
+    world.apply_friction(info_node, ctx)
+    if options.strict and ctx.warnings:
+        raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
+    model = _compile(spec)
+    device.tune_servos(spec, model)
+    return CompileResult(spec, model, ctx.table, ctx.warnings, ctx.texture_paths)
+
+
+def _first(scene: Scene, type_name: str) -> Node | None:
+    for node in scene.nodes:
+        if node.base_type == type_name:
+            return node
+    return None
+
+
+def _compile(spec: mujoco.MjSpec) -> mujoco.MjModel:
+    try:
+        return spec.compile()
+    except ValueError as exc:
+        raise CompileError(*_explain(str(exc), spec)) from None
+
+
+def _explain(message: str, spec: mujoco.MjSpec) -> tuple[str, Span | None]:
+    """MuJoCo's error sentence, placed at the world line of the element it names."""
+    first = message.strip().splitlines()[0] if message.strip() else "MuJoCo rejected the model"
+    first = re.sub(r"^Error:\s*", "", first)
+    match = re.search(r"Element name '([^']*)'", message)
+    span = None
+    if match:
+        for kind in ("bodies", "geoms", "joints", "actuators", "meshes", "sites", "cameras"):
+            for element in getattr(spec, kind):
+                if element.name == match.group(1) and element.info:
+                    span = _span(element.info)
+                    break
+            if span:
+                break
+    return f"MuJoCo cannot compile the model: {first}", span
+
+
+def _span(text: str) -> Span | None:
+    match = re.match(r"(.+?):(\d+):(\d+)", text)
+    return Span(match.group(1), int(match.group(2)), int(match.group(3))) if match else None

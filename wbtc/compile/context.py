@@ -1,0 +1,128 @@
+"""What every emitter shares while one scene is compiled: the spec, names, warnings, options.
+
+Also the per-file facts emitters need: which version wrote a node (pre-R2022a files have their
+primitive axes along y), and where its relative URLs start.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.table import DeviceTable
+from wbtc.errors import Diagnostic, Span
+from wbtc.proto.model import load_proto
+from wbtc.resources import protos_dir
+from wbtc.scene.model import Node, Scene
+from wbtc.vrml.header import R2022A, Version
+
+_LIBRARY = str(protos_dir())
+#: MuJoCo geom groups: the viewer shows 0-2 by default, so visuals go in 1 and collisions in 3.
+VISUAL_GROUP = 1
+COLLISION_GROUP = 3
+
+
+@dataclass
+class CompileOptions:
+    """Knobs of the compiler.
+
+    Attributes:
+        max_substep_ms: the longest MuJoCo timestep allowed; the substep divides basicTimeStep.
+        strict: unhonoured fields are errors instead of warnings.
+    """
+
+    max_substep_ms: float = 2.0
+    strict: bool = False
+
+
+@dataclass
+class CompileContext:
+    """State shared by the emitters while compiling one scene."""
+
+    scene: Scene
+    spec: mujoco.MjSpec
+    options: CompileOptions
+    table: DeviceTable = field(default_factory=DeviceTable)
+    warnings: list[Diagnostic] = field(default_factory=list)
+    contact_geoms: list[tuple[mujoco.MjsGeom, Node]] = field(default_factory=list)
+    default_damping: Node | None = None
+    texture_paths: dict[str, str] = field(default_factory=dict)
+    _names: dict[str, set[str]] = field(default_factory=dict)
+    _warned: set[tuple[str, str]] = field(default_factory=set)
+    _versions: dict[str, Version | None] = field(default_factory=dict)
+
+    def unique(self, kind: str, base: str) -> str:
+        """A name not used yet for this kind of element: `base`, else `base(1)`, `base(2)`...
+
+        Webots renames clashing sibling Solids the same way ("solid(1)"), so names stay familiar.
+        """
+        used = self._names.setdefault(kind, set())
+        base = base or kind
+        name, n = base, 0
+        while name in used:
+            n += 1
+            name = f"{base}({n})"
+        used.add(name)
+        return name
+
+    def warn(self, message: str, span: Span | None) -> None:
+        """Record one warning."""
+        self.warnings.append(Diagnostic(message, span, severity="warning"))
+
+    def unhonoured(self, node: Node, names: frozenset[str]) -> None:
+        """Warn once per (node type, field) for a written field the compiler does not honour yet."""
+        if node.span.file.startswith(_LIBRARY):
+            return  # wbtc's own PROTOs: the user cannot act on them (their limits are in protos/README.md)
+        for name in node.fields:
+            if name not in names or _is_default(node, name):
+                continue
+            key = (node.base_type, name)
+            if key in self._warned:
+                continue
+            self._warned.add(key)
+            span = node.field_spans.get(name, node.span)
+            self.warn(f"{node.base_type}.{name} is not honoured by wbtc yet; it is ignored", span)
+
+    def legacy_axes(self, node: Node) -> bool:
+        """True when the file that wrote this node predates R2022a (primitives along y, cameras along -z)."""
+        version = self.file_version(node.span.file)
+        return version is not None and version < R2022A
+
+    def file_version(self, path: str) -> Version | None:
+        """The header version of the world or PROTO file at `path`."""
+        if path not in self._versions:
+            if path == str(self.scene.path):
+                self._versions[path] = self.scene.version
+            elif path.endswith(".proto") and Path(path).is_file():
+                model = load_proto(Path(path))
+                self._versions[path] = model.version or self.scene.version
+            else:
+                self._versions[path] = self.scene.version
+        return self._versions[path]
+
+
+def _is_default(node: Node, name: str) -> bool:
+    """True when a written field holds its schema default (a PROTO body writing `top TRUE`)."""
+    if node.schema is None:
+        return False
+    spec = node.schema.field(name)
+    if spec is None:
+        return False
+    try:
+        return bool(np.array_equal(np.asarray(node.fields[name], dtype=object), np.asarray(spec.default, dtype=object)))
+    except (TypeError, ValueError):
+        return False
+
+
+def info(node: Node) -> str:
+    """The `info` string of a MuJoCo element made from `node`: the world's line first.
+
+    A node made by a PROTO names the instance's line in the world and the line in the PROTO file.
+    """
+    span = node.span
+    if node.origin is not None and node.origin != span:
+        return f"{node.origin} > {span} {node.type_name}"
+    return f"{span} {node.type_name}"

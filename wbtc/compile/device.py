@@ -1,0 +1,180 @@
+"""Robots and devices: DeviceTable entries and the MuJoCo sites, cameras and actuators they need.
+
+A Solid device (DistanceSensor, Camera, InertialUnit, LED, ...) gets a site at its origin; a
+Camera, RangeFinder or Lidar also gets a MuJoCo camera looking along the device's +x axis; a
+RotationalMotor or LinearMotor gets a velocity actuator on its joint whose force is limited to
+maxTorque/maxForce — the runtime turns Webots' motor model (position P controller, velocity and
+acceleration limits) into that actuator's velocity target every basic time step.
+
+Not honoured yet: Motor `consumptionFactor`, `sound`, `muscles`, `multiplier` (coupled motors);
+Camera `projection` other than planar, `lens`, `focus`, `lensFlare`, `motionBlur`, `bloomThreshold`;
+the devices of a DifferentialWheels robot.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.context import VISUAL_GROUP, CompileContext, info
+from wbtc.compile.frames import mat_to_quat
+from wbtc.compile.table import DeviceEntry, RobotEntry, plain_fields
+from wbtc.scene.model import Node
+
+if TYPE_CHECKING:
+    from wbtc.compile.solid import BodyBuilder
+
+SOLID_DEVICES = frozenset({
+    "Accelerometer", "Altimeter", "Camera", "Compass", "Connector", "Display", "DistanceSensor", "Emitter", "GPS",
+    "Gyro", "InertialUnit", "LED", "Lidar", "LightSensor", "Pen", "Radar", "RangeFinder", "Receiver", "Speaker",
+    "Microphone", "TouchSensor", "VacuumGripper",
+})
+CAMERA_DEVICES = frozenset({"Camera", "RangeFinder"})
+#: Sites of devices are drawn in MuJoCo's group 5, hidden in the viewer by default.
+SITE_GROUP = 5
+_UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare", "motionBlur",
+                         "projection", "bloomThreshold"})
+
+# Webots cameras (R2022a+) look along +x with +z up; MuJoCo cameras look along -z with +y up.
+# The columns are MuJoCo's camera axes written in the device frame: x_cam = -y, y_cam = +z, z_cam = -x.
+CAMERA_QUAT = mat_to_quat(np.array([[0.0, 0.0, -1.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]))
+
+
+def add_robot(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> RobotEntry:
+    """A Robot's DeviceTable entry."""
+    args = node.get("controllerArgs")
+    if isinstance(args, str):  # very old files wrote one string
+        args = args.split()
+    entry = RobotEntry(
+        name=str(node.get("name")), node=node, body=body.name, controller=str(node.get("controller")),
+        controller_args=[str(a) for a in args or []], custom_data=str(node.get("customData") or ""),
+        supervisor=bool(node.get("supervisor")), synchronization=bool(node.get("synchronization")),
+        model=str(node.get("model") or ""),
+    )
+    ctx.table.robots.append(entry)
+    return entry
+
+
+def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: CompileContext,
+               builder: BodyBuilder) -> DeviceEntry | None:
+    """The DeviceTable entry, site and camera of a Solid device (None for a plain Solid)."""
+    kind = node.base_type
+    if kind not in SOLID_DEVICES:
+        return None
+    ctx.unhonoured(node, _UNHONOURED)
+    name = str(node.get("name"))
+    if robot.device(name) is not None:
+        ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
+        return None
+    site = body.add_site()
+    site.name = ctx.unique("site", body.name)
+    site.size = [0.002, 0, 0]
+    site.group = SITE_GROUP
+    site.info = info(node)
+    entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, site=site.name)
+    if kind in CAMERA_DEVICES:
+        entry.camera = _camera(node, body, ctx)
+    robot.devices.append(entry)
+    return entry
+
+
+def _camera(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> str:
+    camera = body.add_camera()
+    camera.name = ctx.unique("camera", body.name)
+    camera.info = info(node)
+    width, height = int(node.get("width")), int(node.get("height"))
+    fov = float(node.get("fieldOfView"))
+    # Webots' fieldOfView is horizontal; MuJoCo's fovy is vertical, in degrees (square pixels).
+    camera.fovy = math.degrees(2 * math.atan(math.tan(fov / 2) * height / max(width, 1)))
+    camera.resolution = [width, height]
+    # Pre-R2022a cameras already looked along -z with y up, which is MuJoCo's own convention.
+    camera.quat = [1.0, 0, 0, 0] if ctx.legacy_axes(node) else CAMERA_QUAT
+    return camera.name
+
+
+def finish_led(entry: DeviceEntry, body: mujoco.MjsBody, ctx: CompileContext) -> None:
+    """Name the LED's visual geoms so the runtime can light them."""
+    names = []
+    for index, geom in enumerate(body.geoms):
+        if geom.group != VISUAL_GROUP:
+            continue
+        if not geom.name:
+            geom.name = ctx.unique("geom", f"{body.name}/shape{index}")
+        names.append(geom.name)
+    entry.geoms = names
+
+
+def add_joint_device(node: Node, joint: mujoco.MjsJoint, body: mujoco.MjsBody, robot: RobotEntry,
+                     ctx: CompileContext, position: float, axis: int) -> None:
+    """A motor, position sensor or brake in a Joint's `device` list."""
+    kind = node.base_type
+    if kind not in ("RotationalMotor", "LinearMotor", "PositionSensor", "Brake"):
+        return
+    ctx.unhonoured(node, _UNHONOURED)
+    name = str(node.get("name"))
+    if robot.device(name) is not None:
+        ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
+        return
+    entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, joint=joint.name,
+                        initial_position=position, axis=axis)
+    if kind in ("RotationalMotor", "LinearMotor"):
+        entry.actuator = _actuator(node, joint, ctx, robot)
+    _pair(entry, robot)
+    robot.devices.append(entry)
+
+
+def _actuator(node: Node, joint: mujoco.MjsJoint, ctx: CompileContext, robot: RobotEntry) -> str:
+    limit = float(node.get("maxTorque") if node.base_type == "RotationalMotor" else node.get("maxForce"))
+    actuator = ctx.spec.add_actuator()
+    actuator.name = ctx.unique("actuator", f"{robot.name}/{node.get('name')}")
+    actuator.info = info(node)
+    actuator.target = joint.name
+    actuator.trntype = mujoco.mjtTrn.mjTRN_JOINT
+    # A velocity servo: force = kv (target - velocity). MuJoCo's implicit integrator makes any gain
+    # stable as long as the force is not clamped (a clamped force loses its implicit damping and
+    # overshoots wildly on light wheels), so the torque limit is enforced by the runtime, which
+    # lowers the gain when the servo asks for more than maxTorque; the model keeps `forcerange`
+    # for reference only.
+    actuator.set_to_velocity(kv=1.0)
+    actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
+    actuator.forcerange = [-limit, limit]
+    actuator.ctrllimited = mujoco.mjtLimited.mjLIMITED_FALSE
+    return actuator.name
+
+
+def _pair(entry: DeviceEntry, robot: RobotEntry) -> None:
+    """Link motors and position sensors that share a joint (Motor.getPositionSensor and back)."""
+    for other in robot.devices:
+        if other.joint != entry.joint or other.axis != entry.axis:
+            continue
+        if entry.type == "PositionSensor" and other.actuator:
+            entry.motor, other.sensor = other.name, entry.name
+        elif entry.actuator and other.type == "PositionSensor":
+            entry.sensor, other.motor = other.name, entry.name
+
+
+
+#: Servo stiffness: the gain makes the joint reach its target velocity within a substep even when
+#: it drives a robot SERVO_GAIN times heavier than its own floating inertia (implicit integration
+#: keeps any gain stable).
+SERVO_GAIN = 100.0
+
+
+def tune_servos(spec: mujoco.MjSpec, model: mujoco.MjModel) -> None:
+    """Give every motor servo a gain that makes its joint track like an ODE motor.
+
+    Webots' ODE motor reaches the target velocity within one step unless that needs more than
+    maxTorque: kv = SERVO_GAIN × (the joint's floating inertia) / timestep does the same.
+    """
+    for i in range(model.nu):
+        joint = model.actuator_trnid[i, 0]
+        inertia = 1.0 / max(float(model.dof_invweight0[model.jnt_dofadr[joint]]), 1e-12)
+        kv = SERVO_GAIN * inertia / model.opt.timestep
+        model.actuator_gainprm[i, 0] = kv
+        model.actuator_biasprm[i, 2] = -kv
+        element = spec.actuator(model.actuator(i).name)
+        element.gainprm[0] = kv
+        element.biasprm[2] = -kv

@@ -1,0 +1,106 @@
+"""HingeJoint, Hinge2Joint, BallJoint and SliderJoint to MuJoCo joints on the endPoint's body.
+
+Webots writes a joint's `axis` and `anchor` in the frame of the Solid that holds the joint, and the
+endPoint's pose as it is at the joint's current `position`. MuJoCo writes joints in the child
+body's frame, and its `ref` is exactly "the joint value at the pose written in the model", so the
+endPoint's pose is kept and `ref = position`: MuJoCo then reports the same joint value Webots'
+PositionSensor does, relative to the zero found by undoing `position` about the axis.
+
+Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `suspensionAxis`,
+`stopERP`, `stopCFM`; BallJoint motors (`device2`/`device3`, and `device` on a ball joint);
+SolidReference endPoints (closed loops); Brake devices (listed, no effect).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import mujoco
+import numpy as np
+
+from wbtc.compile import device
+from wbtc.compile.context import info
+from wbtc.compile.frames import Frame, quat_conj, quat_rotate
+from wbtc.compile.table import RobotEntry
+from wbtc.scene.model import Node
+from wbtc.schema.registry import node_schema
+
+if TYPE_CHECKING:
+    from wbtc.compile.solid import BodyBuilder
+
+_UNHONOURED = frozenset({"suspensionSpringConstant", "suspensionDampingConstant", "suspensionAxis", "stopERP",
+                         "stopCFM"})
+
+
+def param(params: Node | None, type_name: str, name: str) -> object:
+    """A joint parameter: the node's value, or the default of `type_name` when the node is NULL."""
+    if isinstance(params, Node):
+        return params.get(name)
+    field = node_schema(type_name).field(name)
+    return field.default if field is not None else None
+
+
+def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,
+              dynamic: bool) -> None:
+    """Add a Joint node: its endPoint as a child body, the MuJoCo joint(s) on it, and its devices."""
+    ctx = builder.ctx
+    end = node.get("endPoint")
+    if not isinstance(end, Node) or not end.is_a("Solid"):
+        if isinstance(end, Node) and end.base_type == "SolidReference":
+            ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
+        return
+    kind = node.base_type
+    first = node.get("jointParameters")
+    first_type = {"SliderJoint": "JointParameters", "BallJoint": "BallJointParameters"}.get(kind,
+                                                                                            "HingeJointParameters")
+    if isinstance(first, Node):
+        ctx.unhonoured(first, _UNHONOURED)
+    child = builder.add_solid(end, body, frame, robot, dynamic, joint_frame=frame)
+    child_pose = Frame(np.asarray(child.pos, dtype=float), np.asarray(child.quat, dtype=float), np.ones(3))
+    anchor = frame.apply(np.asarray(param(first, first_type, "anchor") if kind != "SliderJoint" else [0, 0, 0],
+                                    dtype=float))
+    if kind == "SliderJoint":
+        anchor = child_pose.pos  # a slider has no anchor: put the joint at the endPoint's origin
+    axes: list[tuple[Node | None, str, str]] = []
+    if kind == "BallJoint":
+        joint = _make(child, node, ctx, mujoco.mjtJoint.mjJNT_BALL, child_pose, anchor, None, first, first_type)
+        if any(node.get(f) for f in ("device", "device2", "device3")):
+            ctx.warn("motors and sensors on a BallJoint are not supported by wbtc yet", node.span)
+        return
+    axes.append((first, first_type, "device"))
+    if kind == "Hinge2Joint":
+        axes.append((node.get("jointParameters2"), "JointParameters", "device2"))
+    joint_type = mujoco.mjtJoint.mjJNT_SLIDE if kind == "SliderJoint" else mujoco.mjtJoint.mjJNT_HINGE
+    for index, (params, params_type, device_field) in enumerate(axes, start=1):
+        axis = frame.rotate(np.asarray(param(params, params_type, "axis"), dtype=float))
+        joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
+        position = float(param(params, params_type, "position"))
+        for dev in node.get(device_field) or []:
+            if isinstance(dev, Node) and robot is not None:
+                device.add_joint_device(dev, joint, child, robot, ctx, position, index)
+
+
+def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjtJoint, child_pose: Frame,
+          anchor: np.ndarray, axis: np.ndarray | None, params: Node | None, params_type: str) -> mujoco.MjsJoint:
+    """One MuJoCo joint in the child body's frame."""
+    joint = child.add_joint()
+    joint.type = joint_type
+    joint.name = ctx.unique("joint", child.name)  # type: ignore[attr-defined]
+    joint.info = info(node)
+    inverse = quat_conj(child_pose.quat)
+    joint.pos = quat_rotate(inverse, anchor - child_pose.pos)
+    if axis is not None:
+        norm = np.linalg.norm(axis)
+        joint.axis = quat_rotate(inverse, axis / norm if norm > 0 else np.array([0.0, 0.0, 1.0]))
+    position = float(param(params, params_type, "position"))
+    if joint_type != mujoco.mjtJoint.mjJNT_BALL:
+        joint.ref = position  # the written pose is the pose at `position` (see module docstring)
+    low, high = float(param(params, params_type, "minStop")), float(param(params, params_type, "maxStop"))
+    if (low, high) != (0.0, 0.0) and low < high and joint_type != mujoco.mjtJoint.mjJNT_BALL:
+        joint.limited = mujoco.mjtLimited.mjLIMITED_TRUE
+        joint.range = [low, high]
+    # MuJoCo 4 takes polynomial coefficients; Webots' spring and damper are the linear terms.
+    joint.stiffness = [float(param(params, params_type, "springConstant")), 0.0, 0.0]
+    joint.damping = [float(param(params, params_type, "dampingConstant")), 0.0, 0.0]
+    joint.frictionloss = float(param(params, params_type, "staticFriction"))
+    return joint

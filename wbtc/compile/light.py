@@ -1,0 +1,64 @@
+"""DirectionalLight, PointLight and SpotLight to MuJoCo lights.
+
+Webots' light colour × intensity becomes MuJoCo's diffuse colour, `ambientIntensity` its ambient,
+`attenuation` carries over as is (both use 1 / (a0 + a1 d + a2 d²)), a spot's `cutOffAngle`
+(radians, half angle) becomes MuJoCo's cutoff (degrees) and `beamWidth` a rough exponent.
+
+Not honoured yet: `radius` (MuJoCo lights reach everywhere), `castLensFlares`. MuJoCo's OpenGL
+renderer uses at most eight lights.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.context import CompileContext, info
+from wbtc.compile.frames import Frame
+from wbtc.scene.model import Node
+
+_UNHONOURED = frozenset({"radius", "castLensFlares"})
+
+
+def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContext) -> mujoco.MjsLight | None:
+    """Add one light node to `body` at `frame`; None when the light is off."""
+    ctx.unhonoured(node, _UNHONOURED)
+    if not node.get("on"):
+        return None
+    kind = node.base_type
+    light = body.add_light()
+    light.name = ctx.unique("light", node.def_name or kind)
+    light.info = info(node)
+    colour = np.asarray(node.get("color"), dtype=float)
+    intensity = float(node.get("intensity"))
+    light.diffuse = np.clip(colour * intensity, 0.0, 1.0)
+    light.specular = np.clip(colour * intensity * 0.3, 0.0, 1.0)
+    light.ambient = np.clip(colour * float(node.get("ambientIntensity")), 0.0, 1.0)
+    light.castshadow = bool(node.get("castShadows"))
+    if kind == "DirectionalLight":
+        light.type = mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
+        light.dir = _unit(frame.rotate(np.asarray(node.get("direction"), dtype=float)))
+        # A directional light has no position in Webots; MuJoCo draws it from above the scene.
+        light.pos = frame.pos + np.array([0.0, 0.0, 10.0])
+        return light
+    light.pos = frame.apply(np.asarray(node.get("location"), dtype=float))
+    light.attenuation = np.asarray(node.get("attenuation"), dtype=float)
+    if kind == "PointLight":
+        light.type = mujoco.mjtLightType.mjLIGHT_POINT
+        return light
+    light.type = mujoco.mjtLightType.mjLIGHT_SPOT
+    light.dir = _unit(frame.rotate(np.asarray(node.get("direction"), dtype=float)))
+    cutoff = float(node.get("cutOffAngle"))
+    light.cutoff = math.degrees(cutoff)
+    beam = float(node.get("beamWidth"))
+    # Webots keeps full intensity inside beamWidth then fades to the cut-off; a MuJoCo exponent
+    # approximates that fall-off (0 = uniform when the beam fills the cone).
+    light.exponent = 0.0 if beam >= cutoff else 10.0 * (1 - beam / max(cutoff, 1e-6))
+    return light
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    norm = float(np.linalg.norm(v))
+    return v / norm if norm > 0 else np.array([0.0, 0.0, -1.0])

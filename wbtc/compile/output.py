@@ -1,0 +1,57 @@
+"""Writing a compiled world as MJCF: the XML from `MjSpec.to_xml()` and its textures beside it.
+
+Textures live in the spec's in-memory assets while compiling; on disk they go to a folder named
+after the output file (`robot.xml` → `robot_assets/`), which the XML names as its texture
+directory. Everything is written to temporary names first and renamed at the end, so an output
+is there whole or not at all.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import tempfile
+from pathlib import Path
+
+import mujoco
+
+from wbtc.errors import CompileError
+
+
+def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
+    """Write `spec` as MJCF at `out` with its assets; returns the files written.
+
+    Raises:
+        CompileError: the output folder does not exist or cannot be written.
+    """
+    out = Path(out)
+    if not out.parent.is_dir():
+        raise CompileError(f"the output folder {out.parent} does not exist")
+    assets = dict(spec.assets)
+    asset_dir = out.with_name(out.stem + "_assets")
+    if assets:
+        spec.texturedir = asset_dir.name
+        spec.meshdir = asset_dir.name
+    try:
+        xml = spec.to_xml()
+    except ValueError as exc:  # MuJoCo refuses to write a spec it cannot compile
+        raise CompileError(f"MuJoCo cannot write the model: {str(exc).strip()}") from None
+    written: list[Path] = []
+    try:
+        with tempfile.TemporaryDirectory(dir=out.parent, prefix=".wbtc-") as tmp:
+            tmp_xml = Path(tmp) / out.name
+            tmp_xml.write_text(xml, encoding="utf-8")
+            if assets:
+                tmp_assets = Path(tmp) / asset_dir.name
+                tmp_assets.mkdir()
+                for name, data in sorted(assets.items()):
+                    (tmp_assets / name).write_bytes(data)
+                if asset_dir.exists():
+                    shutil.rmtree(asset_dir)
+                os.replace(tmp_assets, asset_dir)
+                written += [asset_dir / name for name in sorted(assets)]
+            os.replace(tmp_xml, out)
+            written.insert(0, out)
+    except OSError as exc:
+        raise CompileError(f"cannot write {out}: {exc.strerror or exc}") from None
+    return written

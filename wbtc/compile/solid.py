@@ -1,0 +1,252 @@
+"""Solids, Robots and grouping nodes to MuJoCo bodies, with Webots' physics rules.
+
+Every Solid becomes a MuJoCo body (so the supervisor and the runtime can find it by name). Webots'
+rules then fall out of MuJoCo's own: a top-level Solid with Physics gets a free joint; any other
+Solid not reached through a Joint has no joint, so MuJoCo welds it to its parent: to the static
+world when the parent is static (Webots' fixed joint), into the parent's rigid body when the
+parent moves (Webots' implicit solid merging). Group, Pose and Transform are frames, not bodies.
+
+Masses come from Physics nodes only: density × the volume of the Solid's own bounding objects, or
+`mass`; `centerOfMass` and `inertiaMatrix` override the computed ones. Bodies get explicit
+inertials and every geom is massless to MuJoCo.
+
+Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `recognitionColors` (used by
+the runtime's camera recognition, not here), `locked`, hidden `linearVelocity`/`angularVelocity`;
+Physics `damping` is approximated with free-joint damping; Robot `battery`, `cpuConsumption`,
+`selfCollision` (MuJoCo never collides a body with its parent, other pairs do collide).
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from wbtc.compile import appearance, device, geometry, joint, light
+from wbtc.compile.context import CompileContext, info
+from wbtc.compile.frames import Frame, axis_angle_quat
+from wbtc.compile.table import RobotEntry
+from wbtc.scene.model import Node
+
+_UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "linearVelocity",
+                         "angularVelocity", "battery", "selfCollision"})
+JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
+#: Mass of a body that moves on a joint but has no Physics node (Webots moves it kinematically).
+KINEMATIC_MASS = 1e-3
+
+
+def pose_quat(node: Node) -> np.ndarray:
+    """A Pose/Solid's `rotation` field as a quaternion."""
+    rot = node.get("rotation")
+    return axis_angle_quat((rot[0], rot[1], rot[2]), rot[3])
+
+
+class BodyBuilder:
+    """Walks the expanded scene and adds bodies, geoms, joints and devices to the spec."""
+
+    def __init__(self, ctx: CompileContext) -> None:
+        self.ctx = ctx
+
+    def walk(self, node: Node, body: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,
+             dynamic: bool) -> None:
+        """Add one node found in a `children` list.
+
+        Args:
+            node: the node.
+            body: the MuJoCo body it belongs to.
+            frame: its parent frame in `body`.
+            robot: the robot whose devices it may hold.
+            dynamic: True when `body` moves (it or an ancestor has Physics).
+        """
+        kind = node.base_type
+        if node.is_proto:
+            return  # an unresolved PROTO: the PROTO stage already warned
+        if node.is_a("Solid"):
+            self.add_solid(node, body, frame, robot, dynamic)
+        elif kind in ("Group", "Billboard"):
+            self.walk_children(node.get("children"), body, frame, robot, dynamic)
+        elif kind in ("Pose", "Transform"):
+            scale = np.asarray(node.get("scale"), dtype=float) if kind == "Transform" else None
+            inner = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node), scale)
+            self.walk_children(node.get("children"), body, inner, robot, dynamic)
+        elif kind == "Shape":
+            self.add_shape(node, body, frame)
+        elif kind in JOINT_TYPES:
+            joint.add_joint(self, node, body, frame, robot, dynamic)
+        elif kind in ("DirectionalLight", "PointLight", "SpotLight"):
+            light.add_light(node, body, frame, self.ctx)
+        elif kind == "Slot":
+            end = node.get("endPoint")
+            if isinstance(end, Node):
+                self.walk(end, body, frame, robot, dynamic)
+        elif kind in ("CadShape", "Propeller", "Fluid", "Skin", "Muscle"):
+            self.ctx.warn(f"{kind} is not supported by wbtc yet; it is left out", node.span)
+
+    def walk_children(self, children: list | None, body: mujoco.MjsBody, frame: Frame,
+                      robot: RobotEntry | None, dynamic: bool) -> None:
+        """Add every node of a `children` list."""
+        for child in children or []:
+            if isinstance(child, Node):
+                self.walk(child, body, frame, robot, dynamic)
+
+    def add_shape(self, shape: Node, body: mujoco.MjsBody, frame: Frame, name: str | None = None) -> list[str]:
+        """A Shape as a visual geom; returns the names of the geoms made (for LEDs)."""
+        geom_node = shape.get("geometry")
+        if not isinstance(geom_node, Node) or geom_node.base_type not in geometry.GEOMETRY_TYPES:
+            return []
+        rgba, material, _ = appearance.shape_look(shape, self.ctx)
+        made = geometry.add_geometry(body, geom_node, frame, self.ctx, collision=False, rgba=rgba,
+                                     material=material, name=name)
+        if made is None:
+            return []
+        return [made[0].name] if made[0].name else []
+
+    def add_solid(self, node: Node, parent: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,
+                  dynamic: bool, joint_frame: Frame | None = None) -> mujoco.MjsBody:
+        """One Solid (or Robot, or Solid device) as a MuJoCo body under `parent`.
+
+        Args:
+            node: the Solid.
+            parent: the MuJoCo parent body.
+            frame: the Solid's parent frame in `parent`.
+            robot: the enclosing robot.
+            dynamic: whether `parent` moves.
+            joint_frame: set when a Joint made this body (its joints are added by the caller).
+
+        Returns:
+            The new body.
+        """
+        ctx = self.ctx
+        ctx.unhonoured(node, _UNHONOURED)
+        pose = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node))
+        body = parent.add_body()
+        body.name = ctx.unique("body", _body_name(node, robot))
+        body.pos, body.quat = pose.pos, pose.quat
+        body.info = info(node)
+        if node.def_name and node.def_name not in ctx.table.bodies:
+            ctx.table.bodies[node.def_name] = body.name
+        physics = node.get("physics")
+        has_physics = isinstance(physics, Node)
+        top_level = parent is ctx.spec.worldbody
+        moves = dynamic or has_physics or joint_frame is not None
+        if top_level and has_physics:
+            free = body.add_freejoint()
+            free.name = ctx.unique("joint", body.name)
+            free.info = info(node)
+        if node.is_a("Robot"):
+            robot = device.add_robot(node, body, ctx)
+        # Old Solids had a `scale` field (graphics only); it scales what the Solid holds.
+        scale = np.asarray(node.fields["scale"], dtype=float) if "scale" in node.fields else None
+        inner = Frame(np.zeros(3), np.array([1.0, 0, 0, 0]), frame.scale if scale is None else frame.scale * scale)
+        props = self._bounding(node.get("boundingObject"), body, inner, node)
+        _inertial(body, physics if has_physics else None, props, moves and joint_frame is not None, ctx, node)
+        if top_level and has_physics:
+            body.first_joint().damping = [_damping_rate(physics, ctx) * body.mass, 0.0, 0.0]
+        entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
+        self.walk_children(node.get("children"), body, inner, robot, moves)
+        if entry is not None and entry.type == "LED":
+            device.finish_led(entry, body, ctx)
+        return body
+
+    def _bounding(self, bounding: object, body: mujoco.MjsBody, frame: Frame,
+                  solid: Node) -> list[geometry.MassProps]:
+        """Collision geoms of a boundingObject; returns their unit-density mass properties."""
+        props: list[geometry.MassProps] = []
+        if not isinstance(bounding, Node):
+            return props
+        kind = bounding.base_type
+        if kind in geometry.GEOMETRY_TYPES:
+            made = geometry.add_geometry(body, bounding, frame, self.ctx, collision=True)
+            if made is not None:
+                self.ctx.contact_geoms.append((made[0], solid))
+                if made[1] is not None:
+                    props.append(made[1])
+        elif kind == "Shape":
+            props += self._bounding(bounding.get("geometry"), body, frame, solid)
+        elif kind in ("Pose", "Transform"):
+            scale = np.asarray(bounding.get("scale"), dtype=float) if kind == "Transform" else None
+            inner = frame.compose(np.asarray(bounding.get("translation"), dtype=float), pose_quat(bounding), scale)
+            for child in bounding.get("children") or []:
+                props += self._bounding(child, body, inner, solid)
+        elif kind == "Group":
+            for child in bounding.get("children") or []:
+                props += self._bounding(child, body, frame, solid)
+        return props
+
+
+def _body_name(node: Node, robot: RobotEntry | None) -> str:
+    base = node.def_name or str(node.get("name") or node.base_type.lower())
+    if robot is not None and not node.is_a("Robot"):
+        return f"{robot.name}/{base}"
+    return base
+
+
+def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.MassProps], on_joint: bool,
+              ctx: CompileContext, solid: Node) -> None:
+    """Set the body's explicit inertial from its Physics node (Webots' rules) or make it massless."""
+    body.explicitinertial = True
+    if physics is None:
+        # A static or merged Solid adds no mass; one that moves on a joint without Physics is moved
+        # kinematically by Webots, and MuJoCo needs some inertia for a jointed body.
+        mass = KINEMATIC_MASS if on_joint else 0.0
+        body.mass = mass
+        body.inertia = [mass * 1e-4] * 3
+        return
+    volume = sum(p.volume for p in props)
+    density, given_mass = float(physics.get("density")), float(physics.get("mass"))
+    if density > 0:
+        mass = density * volume
+    elif given_mass > 0:
+        mass = given_mass
+    else:
+        mass = 0.0
+    if mass <= 0:
+        ctx.warn("this Solid's Physics gives no mass (no bounding volume and no mass); 1 kg is used", physics.span)
+        mass = 1.0
+    com, inertia = _combine(props, mass)
+    com_field = physics.get("centerOfMass")
+    if com_field is not None and len(com_field) > 0:
+        com = np.asarray(com_field[0], dtype=float)
+    matrix = physics.get("inertiaMatrix")
+    if matrix is not None and len(matrix) == 2:
+        # Webots writes [I11 I22 I33], [I12 I13 I23]; MuJoCo's fullinertia is xx yy zz xy xz yz.
+        body.fullinertia = [*map(float, matrix[0]), *map(float, matrix[1])]
+    else:
+        body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
+    body.mass = mass
+    body.ipos = com
+
+
+def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, np.ndarray]:
+    """Centre of mass and inertia about it of several geoms sharing one mass in proportion to volume."""
+    volume = sum(p.volume for p in props)
+    if volume <= 0:
+        # Physics without a bounding volume: a 5 cm sphere of the given mass stands in.
+        return np.zeros(3), np.eye(3) * 0.4 * mass * 0.05**2
+    density = mass / volume
+    com = sum(p.volume * p.com for p in props) / volume
+    inertia = np.zeros((3, 3))
+    for p in props:
+        d = p.com - com
+        # Parallel-axis theorem: shift each geom's inertia to the common centre of mass.
+        inertia += density * p.inertia + density * p.volume * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
+    inertia = np.maximum(inertia, inertia.T)
+    floor = 1e-9 * max(1.0, mass)
+    for i in range(3):
+        inertia[i, i] = max(inertia[i, i], floor)
+    return com, inertia
+
+
+def _damping_rate(physics: Node, ctx: CompileContext) -> float:
+    """The velocity decay rate (1/s) of a Physics node's Damping, or of WorldInfo.defaultDamping."""
+    damping = physics.get("damping")
+    if not isinstance(damping, Node):
+        damping = ctx.default_damping
+    if not isinstance(damping, Node):
+        return 0.0
+    linear = min(max(float(damping.get("linear")), 0.0), 0.999)
+    # ODE removes the fraction `linear` of the velocity per second: a first-order decay of rate
+    # -ln(1 - linear). MuJoCo's joint damping is a force per velocity, hence the caller's × mass
+    # (the angular part shares the linear rate: MuJoCo has one damping per joint).
+    return -math.log(1 - linear)

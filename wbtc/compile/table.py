@@ -1,0 +1,136 @@
+"""The DeviceTable: the compiler's second output, everything the runtime needs to know about robots.
+
+For each robot: its Webots fields (name, controller, arguments, supervisor...), the MuJoCo body
+that carries it, and every device by its Webots name with its type, its fields as plain Python
+values, and the MuJoCo elements that realise it. Element references are names, so the table stays
+valid for any MjModel compiled from the same spec.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from wbtc.scene.model import Node
+
+
+@dataclass
+class DeviceEntry:
+    """One device of one robot.
+
+    Attributes:
+        name: the Webots device name (`getDevice` key).
+        type: the Webots base node type ("RotationalMotor", "DistanceSensor", ...).
+        node: the device's node in the expanded scene.
+        fields: the node's fields as plain Python values (lists, floats, str).
+        body: the MuJoCo body the device is attached to.
+        site: the site at the device's origin (Solid devices), if any.
+        camera: the MuJoCo camera (Camera, RangeFinder, Lidar), if any.
+        joint: the joint a motor or position sensor acts on, if any.
+        actuator: the velocity actuator of a motor, if any.
+        geoms: visual geoms whose colour the device changes (LEDs), if any.
+        motor: for a position sensor or brake, the motor on the same joint (a device name).
+        sensor: for a motor, the position sensor on the same joint (a device name).
+        initial_position: the joint position written in the world (`JointParameters.position`).
+        axis: which axis of a multi-axis joint (1, 2, 3).
+    """
+
+    name: str
+    type: str
+    node: Node
+    fields: dict[str, Any]
+    body: str
+    site: str | None = None
+    camera: str | None = None
+    joint: str | None = None
+    actuator: str | None = None
+    geoms: list[str] = field(default_factory=list)
+    motor: str | None = None
+    sensor: str | None = None
+    initial_position: float = 0.0
+    axis: int = 1
+
+
+@dataclass
+class RobotEntry:
+    """One robot: its controller settings and devices, in Webots' device order."""
+
+    name: str
+    node: Node
+    body: str
+    controller: str
+    controller_args: list[str]
+    custom_data: str
+    supervisor: bool
+    synchronization: bool
+    model: str
+    devices: list[DeviceEntry] = field(default_factory=list)
+
+    def device(self, name: str) -> DeviceEntry | None:
+        """The device with this Webots name, or None."""
+        for entry in self.devices:
+            if entry.name == name:
+                return entry
+        return None
+
+
+@dataclass
+class DeviceTable:
+    """Every robot of a world and how the world maps to MuJoCo.
+
+    Attributes:
+        robots: the robots in file order.
+        coordinate_system: the world's axes ("ENU" or "NUE"); the model itself is always ENU.
+        to_model: rotation taking world-frame vectors into the model's ENU frame.
+        basic_time_step: WorldInfo.basicTimeStep in ms.
+        substeps: MuJoCo steps per basic time step.
+        random_seed: WorldInfo.randomSeed.
+        bodies: MuJoCo body name of each named Solid (by DEF name), for the supervisor.
+        viewpoint: the world's Viewpoint fields (plain values), if any.
+    """
+
+    robots: list[RobotEntry] = field(default_factory=list)
+    coordinate_system: str = "ENU"
+    to_model: np.ndarray = field(default_factory=lambda: np.eye(3))
+    basic_time_step: float = 32.0
+    substeps: int = 1
+    random_seed: int = 0
+    bodies: dict[str, str] = field(default_factory=dict)
+    viewpoint: dict[str, Any] | None = None
+
+    def robot(self, name: str) -> RobotEntry | None:
+        """The robot with this name, or None."""
+        for entry in self.robots:
+            if entry.name == name:
+                return entry
+        return None
+
+
+def plain(value: Any) -> Any:
+    """A typed field value as plain Python (numpy arrays to lists, NamedTuples to lists, nodes dropped)."""
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    if isinstance(value, Node):
+        return None
+    if isinstance(value, tuple):
+        return [plain(v) for v in value]
+    if isinstance(value, list):
+        return [plain(v) for v in value if not isinstance(v, Node)]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def plain_fields(node: Node) -> dict[str, Any]:
+    """Every field of a built-in node (written or default) as plain Python, node fields left out."""
+    out: dict[str, Any] = {}
+    if node.schema is None:
+        return out
+    for spec in node.schema.fields.values():
+        value = node.get(spec.name)
+        if isinstance(value, Node) or (isinstance(value, list) and value and isinstance(value[0], Node)):
+            continue
+        out[spec.name] = plain(value)
+    return out

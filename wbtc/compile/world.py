@@ -1,0 +1,134 @@
+"""WorldInfo, Viewpoint and Background to MuJoCo options, a viewpoint camera and colours; contact friction.
+
+- Gravity: Webots gives a magnitude along the world's down axis; the model is always ENU (z up),
+  so it is (0, 0, -g).
+- Time: MuJoCo's timestep is the largest substep no longer than `max_substep_ms` that divides
+  `basicTimeStep` exactly (controllers see Webots time; contacts want a few ms).
+- Friction: ODE's Coulomb μ of each `contactMaterial` pair. MuJoCo combines two geoms' frictions
+  by their priority, else by maximum: geoms whose material has a ("default", M) ContactProperties
+  get μ and a higher priority, so they win against default geoms; a ("default", "default") entry
+  sets everyone's μ. A pair of two non-default materials is approximated by the first rule.
+- NUE worlds (x north, y up, z east) are turned into ENU once, at the root: every top-level node
+  is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
+
+Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
+single-threaded), `physicsDisable*`, `inkEvaporation`, `lineScale`; ContactProperties
+`frictionRotation`, `rollingFriction`, `bounce`, `bounceVelocity`, `forceDependentSlip`, `softERP`,
+`softCFM`; Fog; Background textures (a plain sky colour is used).
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.context import CompileContext, info
+from wbtc.compile.device import CAMERA_QUAT
+from wbtc.compile.frames import IDENTITY_QUAT, NUE_TO_ENU, NUE_TO_ENU_QUAT, Frame, axis_angle_quat, quat_mul
+from wbtc.compile.table import plain_fields
+from wbtc.scene.model import Node
+
+_UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics", "inkEvaporation"})
+_UNHONOURED_CONTACT = frozenset({"frictionRotation", "rollingFriction", "bounce", "bounceVelocity",
+                                 "forceDependentSlip", "softERP", "softCFM"})
+#: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
+INFINITE_FRICTION = 100.0
+
+
+def root_frame(coordinate_system: str) -> Frame:
+    """The frame top-level nodes are placed in: NUE worlds are rotated into ENU here, once."""
+    if coordinate_system == "NUE":
+        return Frame(np.zeros(3), NUE_TO_ENU_QUAT.copy(), np.ones(3))
+    return Frame(np.zeros(3), IDENTITY_QUAT.copy(), np.ones(3))
+
+
+def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
+    """Options from WorldInfo: gravity, time step and substeps, seed, default damping."""
+    spec, table = ctx.spec, ctx.table
+    table.coordinate_system = ctx.scene.coordinate_system if ctx.scene.coordinate_system == "NUE" else "ENU"
+    if ctx.scene.coordinate_system == "EUN":
+        ctx.warn("the EUN coordinate system is not supported by wbtc yet; the world is read as ENU", None)
+    table.to_model = NUE_TO_ENU if table.coordinate_system == "NUE" else np.eye(3)
+    gravity, step = 9.81, 32.0
+    if info_node is not None:
+        ctx.unhonoured(info_node, _UNHONOURED_WORLD)
+        gravity, step = float(info_node.get("gravity")), float(info_node.get("basicTimeStep"))
+        table.random_seed = int(info_node.get("randomSeed"))
+        damping = info_node.get("defaultDamping")
+        ctx.default_damping = damping if isinstance(damping, Node) else None
+    step = step if step > 0 else 32.0
+    substeps = max(1, math.ceil(step / ctx.options.max_substep_ms - 1e-9))
+    table.basic_time_step, table.substeps = step, substeps
+    spec.option.timestep = step / substeps / 1000.0
+    spec.option.gravity = [0.0, 0.0, -gravity]
+    # Implicit integration of the stiff velocity servos that realise Webots motors.
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    spec.visual.global_.offwidth = max(spec.visual.global_.offwidth, 1280)
+    spec.visual.global_.offheight = max(spec.visual.global_.offheight, 720)
+
+
+def add_viewpoint(node: Node, ctx: CompileContext, root: Frame) -> None:
+    """The Viewpoint as a fixed camera named "viewpoint" (what recordings show)."""
+    ctx.table.viewpoint = plain_fields(node)
+    ctx.table.viewpoint["follow"] = str(node.get("follow") or "")
+    rotation = node.get("orientation")
+    pose = root.compose(np.asarray(node.get("position"), dtype=float),
+                        axis_angle_quat((rotation[0], rotation[1], rotation[2]), rotation[3]))
+    camera = ctx.spec.worldbody.add_camera()
+    camera.name = "viewpoint"
+    camera.info = info(node)
+    camera.pos = pose.pos
+    # R2022a+ viewpoints look along +x with z up, like device cameras; older ones along -z, y up.
+    camera.quat = pose.quat if ctx.legacy_axes(node) else quat_mul(pose.quat, CAMERA_QUAT)
+    camera.fovy = math.degrees(float(node.get("fieldOfView")))
+
+
+def add_background(node: Node, ctx: CompileContext) -> None:
+    """Background's first sky colour as MuJoCo's haze and a gradient skybox."""
+    sky = node.get("skyColor")
+    if sky is None or len(sky) == 0:
+        return
+    colour = np.clip(np.asarray(sky[0], dtype=float), 0, 1)
+    texture = ctx.spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX)
+    texture.builtin = mujoco.mjtBuiltin.mjBUILTIN_GRADIENT
+    texture.rgb1, texture.rgb2 = colour, colour * 0.8
+    texture.width = texture.height = 64
+    ctx.spec.visual.rgba.haze = [*colour, 1.0]
+
+
+def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
+    """Friction of every collision geom from WorldInfo.contactProperties (see the module docstring)."""
+    default_mu, by_material = 1.0, {}
+    for props in (info_node.get("contactProperties") if info_node is not None else None) or []:
+        if not isinstance(props, Node):
+            continue
+        ctx.unhonoured(props, _UNHONOURED_CONTACT)
+        mu = _mu(props)
+        pair = {str(props.get("material1")), str(props.get("material2"))}
+        if pair == {"default"}:
+            default_mu = mu
+        elif "default" in pair:
+            by_material[(pair - {"default"}).pop()] = mu
+        else:
+            for material in pair:
+                by_material.setdefault(material, mu)
+            ctx.warn("friction between two non-default contact materials is approximated per material",
+                     props.span)
+    # Contacts as stiff as the substep allows (MuJoCo's advice: a time constant of two steps), so
+    # robots sink about as little as in ODE: an e-puck's body clears the floor by only 0.1 mm.
+    solref = [max(2 * ctx.spec.option.timestep, 0.002), 1.0]
+    for geom, solid in ctx.contact_geoms:
+        geom.solref = solref
+        material = str(solid.get("contactMaterial"))
+        mu = by_material.get(material, default_mu)
+        geom.friction = [mu, 0.005, 0.0001]
+        geom.priority = 1 if material in by_material else 0
+
+
+def _mu(props: Node) -> float:
+    values = props.get("coulombFriction")
+    mu = float(values[0]) if values is not None and len(values) > 0 else 1.0
+    return INFINITE_FRICTION if mu < 0 else mu

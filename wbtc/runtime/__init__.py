@@ -1,0 +1,1 @@
+"""The runtime: simulate a compiled world and run its controllers in lockstep."""

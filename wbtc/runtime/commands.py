@@ -1,0 +1,95 @@
+"""Applying a controller's buffered commands to its robot, and building the step reply.
+
+Commands arrive with the controller's `step()` request, in call order, and take effect before the
+simulator advances (Webots' "at the next step"). The reply carries the values sampled since the
+previous reply, the keyboard's keys and the time.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from wbtc.compile.table import DeviceEntry, plain
+from wbtc.runtime.devices import Receiver
+from wbtc.runtime.simulation import RobotState, Simulation
+
+
+def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -> dict[str, Any]:
+    """The INIT frame for a robot's controller."""
+    entry = robot.entry
+    names = {d.name: tag for tag, d in enumerate(entry.devices)}
+    devices = []
+    for tag, dev in enumerate(entry.devices):
+        info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
+                                "model": str(dev.fields.get("model", "") or ""), "fields": _fields(dev)}
+        if dev.actuator:
+            info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=None)
+        if dev.type == "PositionSensor":
+            info["motor"] = names.get(dev.motor or "")
+        devices.append(info)
+    return {
+        "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
+                  "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
+                  "supervisor": entry.supervisor, "synchronization": entry.synchronization,
+                  "coordinate_system": sim.table.coordinate_system},
+        "time": sim.time, "devices": devices,
+    }
+
+
+def _fields(dev: DeviceEntry) -> dict[str, Any]:
+    return {k: plain(v) for k, v in dev.fields.items()}
+
+
+def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple]) -> None:
+    """Apply one step's buffered commands."""
+    now = sim.time_ms
+    for command in commands:
+        tag, op, args = command[0], command[1], tuple(command[2:])
+        if tag == -1:
+            _robot_command(robot, op, args, now)
+        elif tag in robot.motors:
+            robot.motors[tag].apply(op, args)
+        elif tag in robot.sensors:
+            sensor = robot.sensors[tag]
+            if op == "enable":
+                sensor.enable(int(args[0]), now)
+            elif op == "disable":
+                sensor.enable(0, now)
+            elif op == "setChannel" and isinstance(sensor, Receiver):
+                sensor.channel = int(args[0])
+        elif tag in robot.leds:
+            if op == "set":
+                robot.leds[tag].set(int(args[0]), sim.model)
+        elif tag in robot.emitters:
+            emitter = robot.emitters[tag]
+            if op == "send":
+                sim.packets.append((emitter, bytes(args[0])))
+            elif op == "setChannel":
+                emitter.channel = int(args[0])
+            elif op == "setRange":
+                emitter.range = float(args[0])
+
+
+def _robot_command(robot: RobotState, op: str, args: tuple, now: float) -> None:
+    if op == "setCustomData":
+        robot.custom_data = str(args[0])
+    elif op == "keyboardEnable":
+        robot.keyboard_period = int(args[0])
+        robot.keyboard_due = now + robot.keyboard_period if robot.keyboard_period > 0 else math.inf
+    elif op == "keyboardDisable":
+        robot.keyboard_period, robot.keyboard_due = 0, math.inf
+
+
+def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
+    """The step reply: fresh values since the last reply, keys, time."""
+    values = {}
+    for tag, sensor in robot.sensors.items():
+        if sensor.fresh:
+            values[tag] = sensor.value
+            sensor.fresh = False
+    message: dict[str, Any] = {"status": status, "time": sim.time, "values": values}
+    if robot.keys is not None:
+        message["keys"] = robot.keys
+        robot.keys = None
+    return message

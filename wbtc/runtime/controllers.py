@@ -1,0 +1,161 @@
+"""Controller processes: finding a robot's controller, starting it, and talking to it.
+
+A controller is found as Webots finds it (`PROJECT/controllers/NAME/NAME.py` for
+`PROJECT/worlds/WORLD.wbt`) and also in flat layouts (`controllers/NAME/NAME.py` or `NAME.py`
+beside the world). It runs in its own process with the user's Python (the one running wbtc, or
+`[python] COMMAND` of its `runtime.ini`), its folder as working directory, `controllerArgs` as
+`sys.argv[1:]` and wbtc's `controller` package first on `PYTHONPATH`. The two ends talk over an
+inherited socket (see `wbtc._child.controller.wire`). Output is forwarded line by line, prefixed
+with the robot's name.
+
+Not honoured yet: controllers in other languages, `runtime.ini` sections other than
+`[environment variables]`, `[environment variables with paths]` and `[python]`.
+"""
+
+from __future__ import annotations
+
+import configparser
+import os
+import shlex
+import socket
+import subprocess
+import sys
+import tempfile
+import threading
+from pathlib import Path
+from typing import IO, Any
+
+from wbtc._child.controller.wire import WireClosed, recv_frame, send_frame
+from wbtc.resources import child_path
+
+NO_CONTROLLER = frozenset({"", "<none>", "<generic>"})
+
+
+def find_controller(world: Path, name: str) -> Path | None:
+    """The Python file of controller `name` for `world`, or None."""
+    world_dir = world.resolve().parent
+    candidates = [world_dir.parent / "controllers" / name / f"{name}.py",
+                  world_dir / "controllers" / name / f"{name}.py",
+                  world_dir / f"{name}.py"]
+    return next((c for c in candidates if c.is_file()), None)
+
+
+def _runtime_ini(folder: Path) -> tuple[list[str] | None, dict[str, str]]:
+    """The python command and environment a controller's runtime.ini asks for."""
+    ini = folder / "runtime.ini"
+    env: dict[str, str] = {}
+    if not ini.is_file():
+        return None, env
+    parser = configparser.ConfigParser(strict=False, interpolation=None)
+    parser.optionxform = str  # type: ignore[assignment,method-assign]  # keep variable names' case
+    parser.read(ini, encoding="utf-8")
+    for section in ("environment variables with paths", "environment variables"):
+        if parser.has_section(section):
+            for key, value in parser.items(section):
+                env[key] = os.path.expandvars(value.strip('"'))
+    command = None
+    if parser.has_section("python") and parser.has_option("python", "COMMAND"):
+        command = shlex.split(parser.get("python", "COMMAND"))
+        if parser.has_option("python", "OPTIONS"):
+            command += shlex.split(parser.get("python", "OPTIONS"))
+    return command, env
+
+
+class ControllerProcess:
+    """One running controller and its end of the socket."""
+
+    def __init__(self, robot_name: str, sock: socket.socket, process: subprocess.Popen[bytes] | None,
+                 label: str) -> None:
+        self.robot_name = robot_name
+        self.sock = sock
+        self.process = process
+        self.label = label
+        self.closed = False
+        self._threads: list[threading.Thread] = []
+
+    @classmethod
+    def start(cls, robot_name: str, script: Path, args: list[str]) -> ControllerProcess:
+        """Start `script` for `robot_name` with `args`."""
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+        command, extra_env = _runtime_ini(script.parent)
+        env = dict(os.environ)
+        env.update(extra_env)
+        env["PYTHONPATH"] = os.pathsep.join([str(child_path()), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
+        env["PYTHONUNBUFFERED"] = "1"
+        env["WBTC_CONTROLLER_FD"] = str(theirs.fileno())
+        env["WEBOTS_ROBOT_NAME"] = robot_name
+        python = command or [sys.executable]
+        process = subprocess.Popen([*python, script.name, *args], cwd=script.parent, env=env,
+                                   pass_fds=(theirs.fileno(),), stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                   stdin=subprocess.DEVNULL)
+        theirs.close()
+        proc = cls(robot_name, ours, process, script.stem)
+        proc._forward(process.stdout, sys.stdout)
+        proc._forward(process.stderr, sys.stderr)
+        return proc
+
+    @classmethod
+    def extern(cls, robot_name: str) -> ControllerProcess:
+        """Wait for a controller started by hand (`<extern>`), named by WBTC_CONTROLLER_URL."""
+        path = Path(tempfile.gettempdir()) / f"wbtc-{os.getpid()}-{abs(hash(robot_name)) % 10**8}.sock"
+        path.unlink(missing_ok=True)
+        server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+        server.bind(str(path))
+        server.listen(1)
+        print(f"wbtc: robot \"{robot_name}\" waits for its extern controller; start it with\n"
+              f"  WBTC_CONTROLLER_URL=unix:{path} PYTHONPATH={child_path()} python YOUR_CONTROLLER.py",
+              file=sys.stderr, flush=True)
+        sock, _ = server.accept()
+        server.close()
+        path.unlink(missing_ok=True)
+        recv_frame(sock)  # ("hello", name)
+        return cls(robot_name, sock, None, "<extern>")
+
+    def _forward(self, stream: IO[bytes] | None, sink: IO[str]) -> None:
+        if stream is None:
+            return
+
+        def pump() -> None:
+            for raw in iter(stream.readline, b""):
+                line = raw.decode("utf-8", "replace").rstrip("\n")
+                print(f"[{self.robot_name}] {line}", file=sink, flush=True)
+
+        thread = threading.Thread(target=pump, daemon=True)
+        thread.start()
+        self._threads.append(thread)
+
+    def send(self, message: Any) -> bool:
+        """Send one frame; False when the controller is gone."""
+        if self.closed:
+            return False
+        try:
+            send_frame(self.sock, message)
+            return True
+        except OSError:
+            self.closed = True
+            return False
+
+    def receive(self) -> Any | None:
+        """The next frame, or None when the controller closed its end (exited or crashed)."""
+        if self.closed:
+            return None
+        try:
+            return recv_frame(self.sock)
+        except (WireClosed, OSError):
+            self.closed = True
+            return None
+
+    def finish(self, timeout: float = 1.0) -> int | None:
+        """Wait up to `timeout` s for the process to exit, then stop it; returns its exit code."""
+        self.sock.close()
+        self.closed = True
+        if self.process is None:
+            return None
+        try:
+            code = self.process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            code = self.process.wait()
+        for thread in self._threads:
+            thread.join(timeout=1.0)
+        return code

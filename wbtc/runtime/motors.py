@@ -1,0 +1,134 @@
+"""Webots' motor model on top of the compiler's velocity servos.
+
+Every basic time step a motor computes the velocity Webots would ask ODE for and hands it to its
+MuJoCo actuator as the servo's target, with the servo's force limit set to the available torque:
+
+- position control (the default, and after any finite `setPosition`): a PID on the position
+  error, `Vc = P·e + I·∫e + D·(e_prev − e)/ts`, clamped to the requested velocity;
+- velocity control (`setPosition(inf)`): the requested velocity, signed;
+- either way the change of Vc is limited by `acceleration` (when not -1);
+- torque/force control (`setTorque`/`setForce`): a constant effort, the servo gain set to zero.
+
+An untouched motor targets the joint's initial position, so it holds the joint (Webots' rule).
+
+Not honoured yet: `multiplier` (coupled motors), Brake devices, kinematic joints (Solids without
+Physics are given a small mass and driven like the others).
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+import mujoco
+
+from wbtc.compile.table import DeviceEntry
+
+
+class Motor:
+    """The runtime state of one RotationalMotor or LinearMotor."""
+
+    def __init__(self, entry: DeviceEntry, model: mujoco.MjModel, robot_name: str) -> None:
+        fields = entry.fields
+        self.entry = entry
+        self.robot_name = robot_name
+        self.actuator = model.actuator(entry.actuator).id
+        joint = model.joint(entry.joint).id
+        self.qpos_adr = int(model.jnt_qposadr[joint])
+        self.dof_adr = int(model.jnt_dofadr[joint])
+        self.kv = float(model.actuator_gainprm[self.actuator, 0])
+        self.gain = self.kv
+        self.max_velocity = float(fields.get("maxVelocity", 10.0))
+        self.max_torque = float(fields.get("maxTorque", fields.get("maxForce", 10.0)))
+        self.min_position = float(fields.get("minPosition", 0.0))
+        self.max_position = float(fields.get("maxPosition", 0.0))
+        pid = fields.get("controlPID", [10.0, 0.0, 0.0])
+        self.p, self.i, self.d = (float(v) for v in pid)
+        self.acceleration = float(fields.get("acceleration", -1.0))
+        self.target = float(entry.initial_position)
+        self.velocity = self.max_velocity
+        self.available = self.max_torque
+        self.torque: float | None = None
+        self.integral = 0.0
+        self.prev_error = 0.0
+        self.command = 0.0
+
+    def apply(self, op: str, args: tuple) -> None:
+        """One command from the controller."""
+        if op == "setPosition":
+            self.torque = None
+            target = float(args[0])
+            if math.isfinite(target) and self.min_position != self.max_position:
+                target = min(max(target, self.min_position), self.max_position)
+            self.target = target
+        elif op == "setVelocity":
+            v = float(args[0])
+            if abs(v) > self.max_velocity:
+                print(f"WARNING: {self.robot_name}: \"{self.entry.name}\": The requested velocity {v:g} exceeds "
+                      f"'maxVelocity' = {self.max_velocity:g}.", file=sys.stderr)
+                v = math.copysign(self.max_velocity, v)
+            self.velocity = v
+        elif op == "setAcceleration":
+            self.acceleration = float(args[0])
+        elif op in ("setAvailableTorque", "setAvailableForce"):
+            self.available = min(max(float(args[0]), 0.0), self.max_torque)
+        elif op == "setControlPID":
+            self.p, self.i, self.d = (float(v) for v in args[:3])
+            self.integral = self.prev_error = 0.0
+        elif op in ("setTorque", "setForce"):
+            self.torque = min(max(float(args[0]), -self.available), self.available)
+
+    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
+        """Set the actuator for the next basic time step (`ts` seconds)."""
+        a = self.actuator
+        if self.torque is not None:
+            # Force control: a plain motor (gain 1, no velocity feedback), as ODE's constant force.
+            model.actuator_gainprm[a, 0] = 1.0
+            model.actuator_biasprm[a, 2] = 0.0
+            data.ctrl[a] = self.torque
+            return
+        self._limit_gain(data)
+        model.actuator_gainprm[a, 0] = self.gain
+        model.actuator_biasprm[a, 2] = -self.gain
+        if math.isinf(self.target):
+            wanted = self.velocity
+        else:
+            error = self.target - float(data.qpos[self.qpos_adr])
+            self.integral += error * ts
+            derivative = (self.prev_error - error) / ts
+            self.prev_error = error
+            wanted = self.p * error + self.d * derivative + self.i * self.integral
+            limit = abs(self.velocity)
+            wanted = min(max(wanted, -limit), limit)
+        if self.acceleration > 0:
+            step = self.acceleration * ts
+            wanted = min(max(wanted, self.command - step), self.command + step)
+        self.command = wanted
+        data.ctrl[a] = wanted
+
+    def _limit_gain(self, data: mujoco.MjData) -> None:
+        """Keep the servo's effort within the available torque by lowering its gain.
+
+        The gain goes down in proportion when the last step needed more than the limit, and back up
+        (doubling, at most to the nominal stiffness) when it needed less.
+        """
+        force = abs(float(data.actuator_force[self.actuator]))
+        if force > self.available * 1.001 and force > 0:
+            self.gain = max(self.gain * self.available / force, 1e-9)
+        else:
+            self.gain = min(self.gain * 2.0, self.kv)
+
+    def feedback(self, data: mujoco.MjData) -> float:
+        """The torque/force the actuator applied (torque feedback)."""
+        return float(data.actuator_force[self.actuator])
+
+
+def joint_position(data: mujoco.MjData, qpos_adr: int) -> float:
+    """A hinge or slider's position (MuJoCo's value equals Webots': the joint's ref is its `position`)."""
+    return float(data.qpos[qpos_adr])
+
+
+def motors_for(entries: list[DeviceEntry], model: mujoco.MjModel, robot_name: str) -> dict[str, Motor]:
+    """Runtime motors of one robot, by device name."""
+    return {e.name: Motor(e, model, robot_name) for e in entries if e.actuator}
+

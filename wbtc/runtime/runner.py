@@ -1,0 +1,190 @@
+"""`wbtc run`: the lockstep loop between the simulation and its controller processes.
+
+Each controller asks to step n ms; the simulator advances basic time steps until the earliest
+request is due, answers every controller whose time has come, and waits for their next requests.
+The run ends at `duration`, or (without one) when every controller has ended and the world is at
+rest, or after 60 simulated seconds; running controllers then get -1 from `step()` and one second
+to exit.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from wbtc.runtime import commands
+from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, find_controller
+from wbtc.runtime.simulation import RobotState, Simulation
+
+DEFAULT_LIMIT_S = 60.0
+#: Largest joint speed (rad/s or m/s) of a world "at rest".
+REST_SPEED = 1e-3
+
+
+@dataclass
+class RunOptions:
+    """How to run a world."""
+
+    duration: float | None = None
+    realtime: bool = False
+    keys: list[tuple[float, int]] = field(default_factory=list)
+    trace: Callable[[Simulation], None] | None = None
+    on_step: Callable[[Simulation], bool] | None = None  # returns False to stop (viewer closed)
+    progress: bool = False
+
+
+@dataclass
+class Link:
+    """A robot's controller as the loop sees it."""
+
+    robot: RobotState
+    process: ControllerProcess | None
+    status: str = "exited"
+    exit_code: int | None = None
+    wake_ms: float = math.inf
+    controller: str = ""
+
+
+@dataclass
+class RunOutcome:
+    """What `wbtc run` reports."""
+
+    world: str
+    sim_time: float
+    wall_time: float
+    end_reason: str
+    links: list[Link]
+    sim: Simulation
+
+    def to_json(self) -> dict[str, Any]:
+        """The `--json` object (keys in the documented order)."""
+        robots = []
+        for link in self.links:
+            pos, rot = self.sim.robot_pose(link.robot)
+            robots.append({"name": link.robot.entry.name, "controller": link.controller, "status": link.status,
+                           "exit_code": link.exit_code, "position": pos, "rotation": rot,
+                           "distance": link.robot.distance})
+        factor = self.sim_time / self.wall_time if self.wall_time > 0 else math.inf
+        return {"world": self.world, "sim_time": self.sim_time, "wall_time": self.wall_time,
+                "realtime_factor": factor, "robots": robots, "end_reason": self.end_reason}
+
+
+def start_controllers(sim: Simulation, world: Path) -> list[Link]:
+    """Start every robot's controller and read its first step request."""
+    links = []
+    project = str(world.resolve().parent.parent)
+    for robot in sim.robots:
+        name = robot.entry.controller
+        link = Link(robot, None, controller=name)
+        if name == "<extern>":
+            link.process = ControllerProcess.extern(robot.entry.name)
+        elif name not in NO_CONTROLLER:
+            script = find_controller(world, name)
+            if script is None:
+                print(f"WARNING: {robot.entry.name}: the controller \"{name}\" was not found (looked for "
+                      f"controllers/{name}/{name}.py and {name}.py near the world); the robot stays idle.",
+                      file=sys.stderr)
+            else:
+                link.process = ControllerProcess.start(robot.entry.name, script, robot.entry.controller_args)
+        if link.process is not None:
+            link.status = "running"
+            link.process.send(commands.init_message(sim, robot, str(world.resolve()), project))
+            _receive(sim, link)
+        links.append(link)
+    return links
+
+
+def _receive(sim: Simulation, link: Link) -> None:
+    """Wait for the controller's next request and apply its commands."""
+    assert link.process is not None
+    message = link.process.receive()
+    if message is None:
+        link.exit_code = link.process.finish(timeout=5.0)
+        link.status = "exited" if link.exit_code == 0 else "crashed"
+        link.wake_ms = math.inf
+        return
+    if message[0] == "step":
+        duration, batch = int(message[1]), message[2]
+        commands.apply_commands(sim, link.robot, batch)
+        step = sim.step_ms
+        # step(n) runs n ms, rounded up to whole basic time steps (step(0) answers at once).
+        link.wake_ms = sim.time_ms + math.ceil(max(duration, 0) / step - 1e-9) * step
+    else:  # a synchronous call: answered at once, then the controller goes on
+        link.process.send({"error": f"{message[2]!r} is not supported by wbtc yet"})
+        _receive(sim, link)
+
+
+def run(sim: Simulation, world: Path, options: RunOptions) -> RunOutcome:
+    """Run `sim` with its controllers until the end condition; see the module docstring."""
+    start = time.perf_counter()
+    links = start_controllers(sim, world)
+    limit_ms = (options.duration if options.duration is not None else DEFAULT_LIMIT_S) * 1000.0
+    keys = sorted(options.keys)
+    reason = "duration" if options.duration is not None else "time limit (60 s)"
+    last_progress = 0.0
+    while sim.time_ms + 1e-9 < limit_ms:
+        active = [link for link in links if link.status == "running"]
+        if options.duration is None and not active and _at_rest(sim):
+            reason = "all controllers ended and the world is at rest"
+            break
+        due = min([link.wake_ms for link in active], default=math.inf)
+        while sim.time_ms + 1e-9 < min(due, limit_ms):
+            while keys and keys[0][0] * 1000.0 <= sim.time_ms + 1e-9:
+                sim.keys_down.append(keys.pop(0)[1])
+            sim.step()
+            if options.trace:
+                options.trace(sim)
+            if options.on_step and not options.on_step(sim):
+                limit_ms = sim.time_ms
+                reason = "viewer closed"
+            if options.realtime:
+                _sleep_until(start, sim.time)
+            if options.progress and time.perf_counter() - last_progress > 0.2:
+                last_progress = time.perf_counter()
+                _progress(sim.time, limit_ms / 1000.0)
+            if options.duration is None and not active and _at_rest(sim):
+                break
+        if sim.time_ms + 1e-9 >= limit_ms:
+            break
+        ready = [link for link in active if link.wake_ms <= sim.time_ms + 1e-9]
+        for link in ready:  # answer everyone first so controllers compute in parallel
+            assert link.process is not None
+            link.process.send(commands.reply(sim, link.robot, 0))
+        for link in ready:
+            _receive(sim, link)
+    _stop(sim, links)
+    if options.progress:
+        print(file=sys.stderr)
+    return RunOutcome(str(world), sim.time, time.perf_counter() - start, reason, links, sim)
+
+
+def _stop(sim: Simulation, links: list[Link]) -> None:
+    """step() returns -1 to every running controller; each has one second to exit."""
+    for link in links:
+        if link.status == "running" and link.process is not None:
+            link.process.send(commands.reply(sim, link.robot, -1))
+    for link in links:
+        if link.status == "running" and link.process is not None:
+            link.exit_code = link.process.finish(timeout=1.0)
+
+
+def _at_rest(sim: Simulation) -> bool:
+    qvel = sim.data.qvel
+    return len(qvel) == 0 or float(abs(qvel).max()) < REST_SPEED
+
+
+def _sleep_until(start: float, sim_time: float) -> None:
+    delay = start + sim_time - time.perf_counter()
+    if delay > 0:
+        time.sleep(delay)
+
+
+def _progress(now: float, end: float) -> None:
+    width = 30
+    done = int(width * min(now / end, 1.0)) if end > 0 else width
+    print(f"\r[{'#' * done}{' ' * (width - done)}] {now:7.2f} / {end:.0f} s", end="", file=sys.stderr, flush=True)

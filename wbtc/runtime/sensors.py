@@ -1,0 +1,286 @@
+"""Sensor models: what each Webots sensor reads in the MuJoCo state, at its sampling period.
+
+Every sensor starts disabled; `enable(p)` makes it sample every p ms, the first value p ms later.
+Values are in the world's own frame (NUE worlds are read back through the table's rotation).
+
+- DistanceSensor: rays (see `rays`), lookup table with its noise column, resolution.
+- PositionSensor: the joint position (noise σ, resolution).
+- InertialUnit: the device's orientation quaternion (x, y, z, w) in the world's frame.
+- Accelerometer: specific force in the device frame (+9.81 up at rest); Gyro: angular velocity;
+  both through their lookup tables, disabled axes NaN.
+- GPS: position and velocity of the device in the world frame (accuracy σ as Gaussian noise).
+- Compass: the world's north (ENU +y, NUE +x) in the device frame.
+- TouchSensor: bumper 1/0 on contact; force and force-3d from contact forces.
+- LightSensor: irradiance of the world's lights with line of sight, through the lookup table.
+
+Not honoured yet: InertialUnit/GPS/Compass noise models beyond Gaussian accuracy, Accelerometer
+and Gyro `resolution` per axis, LightSensor `colorFilter` and `occlusion` by transparent objects,
+Altimeter, Radar, Microphone.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.frames import mat_to_quat
+from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.lookup import LookupTable, apply, quantize
+from wbtc.runtime.rays import ray_pattern
+
+if TYPE_CHECKING:
+    from wbtc.runtime.simulation import Simulation
+
+
+class Sensor:
+    """A sampled device: period, due time, last value."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        self.entry = entry
+        self.period = 0
+        self.next_due = math.inf
+        self.fresh = False
+        self.value: Any = None
+        self.skip_bodies = skip_bodies
+        model = sim.model
+        self.site = model.site(entry.site).id if entry.site else -1
+        self.body = model.body(entry.body).id
+
+    def enable(self, period: int, now_ms: float) -> None:
+        """Start sampling every `period` ms (0 disables)."""
+        self.period = int(period)
+        self.next_due = now_ms + self.period if self.period > 0 else math.inf
+
+    def tick(self, sim: Simulation, now_ms: float) -> None:
+        """Sample when due."""
+        if now_ms + 1e-9 >= self.next_due:
+            self.value = self.sample(sim)
+            self.fresh = True
+            self.next_due += self.period
+
+    def sample(self, sim: Simulation) -> Any:
+        """The current reading (subclasses)."""
+        raise NotImplementedError  # every concrete sensor overrides this
+
+    def frame(self, sim: Simulation) -> tuple[np.ndarray, np.ndarray]:
+        """World position and rotation matrix of the device origin (model frame)."""
+        return sim.data.site_xpos[self.site], sim.data.site_xmat[self.site].reshape(3, 3)
+
+
+class DistanceSensor(Sensor):
+    """Webots' DistanceSensor (generic, infra-red, sonar, laser)."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        f = entry.fields
+        self.table = LookupTable(f.get("lookupTable"))
+        self.kind = str(f.get("type", "generic"))
+        self.resolution = float(f.get("resolution", -1))
+        self.dirs, self.weights = ray_pattern(int(f.get("numberOfRays", 1)), float(f.get("aperture", 1.5708)),
+                                              float(f.get("gaussianWidth", 1.0)))
+        if self.kind == "laser":
+            self.dirs, self.weights = self.dirs[:1], np.array([1.0])
+        self.range = self.table.max_input
+
+    def sample(self, sim: Simulation) -> float:
+        """Distance from the rays, then the lookup table."""
+        pos, mat = self.frame(sim)
+        infra_red = self.kind == "infra-red"
+        num = den = 0.0
+        nearest = math.inf
+        for direction, weight in zip(self.dirs, self.weights, strict=True):
+            world_dir = mat @ direction
+            dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies)
+            if self.kind == "sonar" and geom >= 0 and not _sonar_ok(sim, pos, world_dir, dist):
+                dist = math.inf
+            hit = math.isfinite(dist)
+            nearest = min(nearest, dist)
+            d = dist if hit else self.range
+            # Infra-red: dark surfaces reflect less and look farther (reflection 0.2 + 0.8 red).
+            reflect = 0.2 + 0.8 * sim.geom_red[geom] if (infra_red and hit) else 1.0
+            num += weight * d
+            den += weight * reflect
+        distance = (nearest if math.isfinite(nearest) else self.range) if self.kind in ("sonar", "laser") \
+            else num / den
+        return apply(self.table, distance, sim.noise_rng, self.resolution)
+
+
+def _sonar_ok(sim: Simulation, pos: np.ndarray, direction: np.ndarray, dist: float) -> bool:
+    """A sonar echo returns only when the ray meets the surface within π/8 of its normal."""
+    probe = pos + direction * (dist - 1e-4)
+    normal = _surface_normal(sim, probe, direction, dist)
+    return normal is None or abs(float(np.dot(normal, -direction))) > math.cos(math.pi / 8)
+
+
+def _surface_normal(sim: Simulation, probe: np.ndarray, direction: np.ndarray, dist: float) -> np.ndarray | None:
+    # Estimate the normal from two neighbouring rays (MuJoCo's ray cast gives no normal).
+    side = np.cross(direction, [0.0, 0.0, 1.0])
+    if np.linalg.norm(side) < 1e-6:
+        side = np.cross(direction, [1.0, 0.0, 0.0])
+    side /= np.linalg.norm(side)
+    up = np.cross(side, direction)
+    start = probe - direction * 0.05
+    points = []
+    for offset in (side * 1e-3, up * 1e-3):
+        d, _ = sim.rays.cast(start + offset, direction, 1.0, False, frozenset())
+        if not math.isfinite(d):
+            return None
+        points.append(start + offset + direction * d)
+    centre = probe + direction * 1e-4
+    normal = np.cross(points[0] - centre, points[1] - centre)
+    norm = np.linalg.norm(normal)
+    return normal / norm if norm > 0 else None
+
+
+class PositionSensor(Sensor):
+    """A joint's position."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        self.qpos_adr = int(sim.model.jnt_qposadr[sim.model.joint(entry.joint).id])
+        self.noise = float(entry.fields.get("noise", 0.0))
+        self.resolution = float(entry.fields.get("resolution", -1.0))
+
+    def sample(self, sim: Simulation) -> float:
+        """The joint position with noise and resolution."""
+        value = float(sim.data.qpos[self.qpos_adr])
+        if self.noise > 0 and sim.noise_rng is not None:
+            value += self.noise * float(sim.noise_rng.standard_normal())
+        return quantize(value, self.resolution)
+
+
+class InertialUnit(Sensor):
+    """Orientation quaternion [x, y, z, w] in the world's frame."""
+
+    def sample(self, sim: Simulation) -> list[float]:
+        """The device orientation."""
+        _, mat = self.frame(sim)
+        w, x, y, z = mat_to_quat(sim.from_model @ mat)
+        return [float(x), float(y), float(z), float(w)]
+
+
+class Vector3Sensor(Sensor):
+    """Accelerometer, Gyro and Compass: a 3-vector through the lookup table, axes maskable."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        f = entry.fields
+        self.table = LookupTable(f.get("lookupTable"))
+        self.axes = [bool(f.get(a, True)) for a in ("xAxis", "yAxis", "zAxis")]
+        self.resolution = float(f.get("resolution", -1.0))
+        self._res = np.zeros(6)
+
+    def raw(self, sim: Simulation) -> np.ndarray:
+        """The vector in the device frame before the lookup table."""
+        kind = self.entry.type
+        if kind == "Compass":
+            _, mat = self.frame(sim)
+            return mat.T @ sim.north
+        flag = 1
+        if kind == "Accelerometer":
+            mujoco.mj_rnePostConstraint(sim.model, sim.data)
+            mujoco.mj_objectAcceleration(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, flag)
+        else:
+            mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, flag)
+        # MuJoCo's 6D vectors are [angular, linear]; cacc holds −gravity, so this is specific force.
+        return self._res[3:].copy() if kind == "Accelerometer" else self._res[:3].copy()
+
+    def sample(self, sim: Simulation) -> list[float]:
+        """Lookup table on each enabled axis."""
+        vec = self.raw(sim)
+        return [apply(self.table, float(v), sim.noise_rng, self.resolution) if on else math.nan
+                for v, on in zip(vec, self.axes, strict=True)]
+
+
+class GPS(Sensor):
+    """Position and velocity of the device in the world frame: [x, y, z, vx, vy, vz]."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        self.accuracy = float(entry.fields.get("accuracy", 0.0))
+        self.resolution = float(entry.fields.get("resolution", -1.0))
+        self._res = np.zeros(6)
+
+    def sample(self, sim: Simulation) -> list[float]:
+        """Position (with accuracy noise) and velocity."""
+        pos, _ = self.frame(sim)
+        mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, 0)
+        p = sim.from_model @ pos
+        if self.accuracy > 0 and sim.noise_rng is not None:
+            p = p + sim.noise_rng.normal(0.0, self.accuracy, 3)
+        v = sim.from_model @ self._res[3:]
+        return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
+
+
+class TouchSensor(Sensor):
+    """Bumper (1/0), force (magnitude through the table) or force-3d (vector in the device frame)."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        self.kind = str(entry.fields.get("type", "bumper"))
+        self.table = LookupTable(entry.fields.get("lookupTable"))
+        self._force = np.zeros(6)
+
+    def sample(self, sim: Simulation) -> float | list[float]:
+        """Contact state or force on the sensor's body."""
+        data, model = sim.data, sim.model
+        total = np.zeros(3)
+        touched = False
+        for i in range(data.ncon):
+            contact = data.contact[i]
+            bodies = (model.geom_bodyid[contact.geom1], model.geom_bodyid[contact.geom2])
+            if self.body not in bodies:
+                continue
+            touched = True
+            if self.kind != "bumper":
+                mujoco.mj_contactForce(model, data, i, self._force)
+                frame = contact.frame.reshape(3, 3)
+                total += frame.T @ self._force[:3]
+        if self.kind == "bumper":
+            return 1.0 if touched else 0.0
+        _, mat = self.frame(sim)
+        if self.kind == "force":
+            return apply(self.table, float(np.linalg.norm(total)), sim.noise_rng)
+        return [float(c) for c in mat.T @ total]
+
+
+class LightSensor(Sensor):
+    """Irradiance from the world's lights along the sensor's +x axis, through the lookup table."""
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        self.table = LookupTable(entry.fields.get("lookupTable"))
+        self.occlusion = bool(entry.fields.get("occlusion", False))
+
+    def sample(self, sim: Simulation) -> float:
+        """Sum of the lights' contributions, Lambert cosine, attenuation."""
+        pos, mat = self.frame(sim)
+        axis = mat[:, 0]
+        model = sim.model
+        total = 0.0
+        for i in range(model.nlight):
+            if not model.light_active[i]:
+                continue
+            diffuse = float(np.mean(model.light_diffuse[i]))
+            if model.light_type[i] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL:
+                to_light, att = -sim.data.light_xdir[i], 1.0
+            else:
+                delta = sim.data.light_xpos[i] - pos
+                dist = float(np.linalg.norm(delta))
+                to_light = delta / max(dist, 1e-9)
+                a = model.light_attenuation[i]
+                att = 1.0 / max(a[0] + a[1] * dist + a[2] * dist * dist, 1e-9)
+            cos = float(np.dot(axis, to_light))
+            if cos > 0:
+                total += diffuse * att * cos
+        return apply(self.table, total, sim.noise_rng)
+
+
+SENSOR_TYPES: dict[str, type[Sensor]] = {
+    "DistanceSensor": DistanceSensor, "PositionSensor": PositionSensor, "InertialUnit": InertialUnit,
+    "Accelerometer": Vector3Sensor, "Gyro": Vector3Sensor, "Compass": Vector3Sensor, "GPS": GPS,
+    "TouchSensor": TouchSensor, "LightSensor": LightSensor,
+}

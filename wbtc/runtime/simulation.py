@@ -1,0 +1,173 @@
+"""The simulated world: MuJoCo model and data, every robot's device models, and Webots time.
+
+`Simulation.step()` advances one WorldInfo.basicTimeStep: motors set their servos, MuJoCo takes
+its substeps, then due sensors sample and pending radio packets are delivered. Noise comes from
+one generator seeded by WorldInfo.randomSeed (or the seed given), so runs repeat exactly.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import mujoco
+import numpy as np
+
+from wbtc.compile import textures
+from wbtc.compile.compiler import CompileResult
+from wbtc.compile.table import DeviceEntry, RobotEntry
+from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
+from wbtc.runtime.motors import Motor
+from wbtc.runtime.rays import RayCaster
+from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
+
+
+@dataclass
+class RobotState:
+    """One robot's device models, indexed by tag (its device index)."""
+
+    entry: RobotEntry
+    body: int
+    bodies: frozenset[int]
+    motors: dict[int, Motor] = field(default_factory=dict)
+    sensors: dict[int, Sensor] = field(default_factory=dict)
+    leds: dict[int, Led] = field(default_factory=dict)
+    emitters: dict[int, Emitter] = field(default_factory=dict)
+    keyboard_period: int = 0
+    keyboard_due: float = math.inf
+    keys: list[int] | None = None
+    custom_data: str = ""
+    distance: float = 0.0
+    last_pos: np.ndarray | None = None
+
+
+class Simulation:
+    """A compiled world being simulated."""
+
+    def __init__(self, result: CompileResult, seed: int | None = None, noise: bool = True) -> None:
+        self.result = result
+        self.model = result.model
+        self.data = mujoco.MjData(self.model)
+        self.table = result.table
+        self.to_model = np.asarray(self.table.to_model, dtype=float)
+        self.from_model = self.to_model.T
+        self.north = np.array([0.0, 1.0, 0.0])  # ENU north (+y), also NUE's north (+x) once rotated
+        self.time_ms = 0.0
+        self.step_ms = float(self.table.basic_time_step)
+        self.substeps = int(self.table.substeps)
+        seed = self.table.random_seed if seed is None else seed
+        self.rng = np.random.default_rng(max(int(seed), 0))
+        self.noise_rng = self.rng if noise else None
+        self.rays = RayCaster(self.model, self.data)
+        self.geom_red = _geom_red(self.model, result)
+        self.keys_down: list[int] = []
+        self.packets: list[tuple[Emitter, bytes]] = []
+        self._renderers: dict[tuple[int, int], mujoco.Renderer] = {}
+        mujoco.mj_forward(self.model, self.data)
+        self.robots = [self._robot(entry) for entry in self.table.robots]
+
+    def _robot(self, entry: RobotEntry) -> RobotState:
+        body = self.model.body(entry.body).id
+        bodies = frozenset(b for b in range(self.model.nbody) if _descends(self.model, b, body))
+        state = RobotState(entry, body, bodies, custom_data=entry.custom_data)
+        for tag, dev in enumerate(entry.devices):
+            self._device(state, tag, dev)
+        state.last_pos = self.data.xpos[body].copy()
+        return state
+
+    def _device(self, state: RobotState, tag: int, dev: DeviceEntry) -> None:
+        if dev.actuator:
+            state.motors[tag] = Motor(dev, self.model, state.entry.name)
+        elif dev.type == "LED":
+            state.leds[tag] = Led(dev, self.model)
+        elif dev.type == "Emitter":
+            state.emitters[tag] = Emitter(dev, self.model)
+        elif dev.type == "Camera" and dev.camera:
+            state.sensors[tag] = Camera(dev, self, state.bodies)
+        elif dev.type == "Receiver":
+            state.sensors[tag] = Receiver(dev, self, state.bodies)
+        elif dev.type in SENSOR_TYPES:
+            state.sensors[tag] = SENSOR_TYPES[dev.type](dev, self, state.bodies)
+
+    @property
+    def time(self) -> float:
+        """Simulated time in seconds."""
+        return self.time_ms / 1000.0
+
+    def step(self) -> None:
+        """Advance one basic time step."""
+        ts = self.step_ms / 1000.0
+        for robot in self.robots:
+            for motor in robot.motors.values():
+                motor.update(self.model, self.data, ts)
+        mujoco.mj_step(self.model, self.data, nstep=self.substeps)
+        self.time_ms += self.step_ms
+        if self.packets:
+            receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]
+            deliver(self, self.packets, receivers)
+            self.packets = []
+        for robot in self.robots:
+            for sensor in robot.sensors.values():
+                if sensor.period > 0:
+                    sensor.tick(self, self.time_ms)
+            if self.time_ms + 1e-9 >= robot.keyboard_due:
+                robot.keys = list(self.keys_down)
+                robot.keyboard_due += robot.keyboard_period
+            pos = self.data.xpos[robot.body]
+            robot.distance += float(np.linalg.norm(pos - robot.last_pos))
+            robot.last_pos = pos.copy()
+        self.keys_down = []
+
+    def render(self, camera: int, width: int, height: int) -> np.ndarray:
+        """An RGB image (rows from the top) from a model camera, without shadows or reflections."""
+        key = (width, height)
+        renderer = self._renderers.get(key)
+        if renderer is None:
+            self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
+            self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
+            renderer = mujoco.Renderer(self.model, height, width)
+            renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
+            renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
+            self._renderers[key] = renderer
+        renderer.update_scene(self.data, camera=camera)
+        renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
+        renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
+        return renderer.render()
+
+    def close(self) -> None:
+        """Free the renderers."""
+        for renderer in self._renderers.values():
+            renderer.close()
+        self._renderers.clear()
+
+    def robot_pose(self, robot: RobotState) -> tuple[list[float], list[float]]:
+        """A robot's position and axis-angle rotation in the world's own frame."""
+        from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
+
+        pos = self.from_model @ self.data.xpos[robot.body]
+        mat = self.from_model @ self.data.xmat[robot.body].reshape(3, 3) @ self.to_model
+        return [float(c) for c in pos], [float(c) for c in quat_to_axis_angle(mat_to_quat(mat))]
+
+
+def _descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
+    while body > 0:
+        if body == ancestor:
+            return True
+        body = int(model.body_parentid[body])
+    return ancestor == 0
+
+
+def _geom_red(model: mujoco.MjModel, result: CompileResult) -> np.ndarray:
+    """The red level each visual geom shows to infra-red sensors (material or texture mean)."""
+    red = np.array(model.geom_rgba[:, 0], dtype=float)
+    for g in range(model.ngeom):
+        mat = int(model.geom_matid[g])
+        if mat < 0:
+            continue
+        red[g] = float(model.mat_rgba[mat, 0])
+        tex = int(model.mat_texid[mat, mujoco.mjtTextureRole.mjTEXROLE_RGB])
+        if tex >= 0:
+            path = result.texture_paths.get(model.texture(tex).name)
+            if path:
+                red[g] *= textures.mean_color(path)[0]
+    return red
