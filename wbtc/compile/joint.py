@@ -19,7 +19,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import device
-from wbtc.compile.context import info
+from wbtc.compile.context import COLLISION_GROUP, info
 from wbtc.compile.frames import Frame, quat_conj, quat_rotate
 from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
@@ -74,6 +74,8 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
     for index, (params, params_type, device_field) in enumerate(axes, start=1):
         axis = frame.rotate(np.asarray(param(params, params_type, "axis"), dtype=float))
         joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
+        if joint_type == mujoco.mjtJoint.mjJNT_HINGE:
+            _round_wheels(child, np.asarray(joint.axis, dtype=float))
         position = float(param(params, params_type, "position"))
         for dev in node.get(device_field) or []:
             if isinstance(dev, Node) and robot is not None:
@@ -104,3 +106,21 @@ def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjt
     joint.damping = [float(param(params, params_type, "dampingConstant")), 0.0, 0.0]
     joint.frictionloss = float(param(params, params_type, "staticFriction"))
     return joint
+
+
+def _round_wheels(body: mujoco.MjsBody, axis: np.ndarray) -> None:
+    """Collide wheels (cylinders turning about their own axis) as thin ellipsoids.
+
+    MuJoCo touches a cylinder lying on a plane at both rims; a wheel then scrubs whenever the robot
+    turns (an e-puck spinning on the spot loses a third of its turn rate). ODE's single contact
+    point is what an ellipsoid with the wheel's radius and half width gives. The mass properties
+    stay the cylinder's.
+    """
+    for geom in body.geoms:
+        if geom.group != COLLISION_GROUP or geom.type != mujoco.mjtGeom.mjGEOM_CYLINDER:
+            continue
+        geom_axis = quat_rotate(np.asarray(geom.quat, dtype=float), np.array([0.0, 0.0, 1.0]))
+        if abs(float(np.dot(geom_axis, axis))) > 0.999:
+            radius, half_height = float(geom.size[0]), float(geom.size[1])
+            geom.type = mujoco.mjtGeom.mjGEOM_ELLIPSOID
+            geom.size = [radius, radius, half_height]

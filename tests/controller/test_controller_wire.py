@@ -1,0 +1,78 @@
+"""The wire module's framing, and checks that the child package stays pure standard library, Python 3.8 syntax."""
+
+from __future__ import annotations
+
+import ast
+import pickle
+import socket
+import struct
+import sys
+
+import pytest
+from controller_sim import CHILD_PATH
+
+from wbtc._child.controller import wire
+
+PACKAGE = CHILD_PATH / "controller"
+
+
+def test_frames_round_trip_over_a_socket() -> None:
+    a, b = socket.socketpair()
+    with a, b:
+        message = ("step", 32, [(0, "setPosition", float("inf")), (-1, "setCustomData", "é"), (3, "send", b"\x00")])
+        wire.send_frame(a, message)
+        wire.send_frame(a, {"status": 0, "values": {1: [1.0, 2.0]}, "keys": None})
+        assert wire.recv_frame(b) == message
+        assert wire.recv_frame(b) == {"status": 0, "values": {1: [1.0, 2.0]}, "keys": None}
+        a.close()
+        with pytest.raises(wire.WireClosed):
+            wire.recv_frame(b)
+
+
+def test_frame_layout_is_a_little_endian_length_and_a_protocol_4_pickle() -> None:
+    frame = wire.encode({"a": 1})
+    payload = pickle.dumps({"a": 1}, protocol=4)
+    assert frame == struct.pack("<I", len(payload)) + payload
+
+
+def test_frames_naming_globals_are_refused() -> None:
+    with pytest.raises(pickle.UnpicklingError, match="builtins only"):
+        wire.decode(pickle.dumps(complex(1, 2), protocol=4))
+
+
+@pytest.mark.parametrize(
+    ("url", "expected"),
+    [
+        ("unix:/tmp/s.sock", ("/tmp/s.sock", None)),
+        ("unix:/tmp/s.sock?robot=e-puck", ("/tmp/s.sock", "e-puck")),
+        ("unix:/tmp/s.sock?robot=my%20robot", ("/tmp/s.sock", "my robot")),
+    ],
+)
+def test_parse_url(url: str, expected: tuple) -> None:
+    assert wire.parse_url(url) == expected
+
+
+def test_parse_url_rejects_other_schemes() -> None:
+    with pytest.raises(ValueError, match="unix:"):
+        wire.parse_url("tcp://localhost:1234/robot")
+
+
+MODULES = sorted(PACKAGE.glob("*.py"))
+
+
+@pytest.mark.parametrize("path", MODULES, ids=[p.name for p in MODULES])
+def test_child_modules_are_python_3_8_syntax_and_standard_library_only(path) -> None:
+    source = path.read_text()
+    tree = ast.parse(source, feature_version=(3, 8))
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            names = [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom) and node.level == 0:
+            names = [node.module or ""]
+        else:
+            continue
+        for name in names:
+            top = name.split(".")[0]
+            assert top == "__future__" or top in sys.stdlib_module_names, f"{path.name} imports {name}"
+    if path.name != "__init__.py":
+        assert "from __future__ import annotations" in source, f"{path.name} needs postponed annotations"

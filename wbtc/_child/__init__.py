@@ -1,0 +1,1 @@
+"""Put on a controller process's PYTHONPATH: holds the `controller` package Webots controllers import."""

@@ -1,0 +1,232 @@
+"""Process-wide controller state: the simulator connection, per-device state and the buffered commands.
+
+This plays the part of Webots' C library: device objects are thin views on a ``DeviceState`` per tag, so several
+Python objects for one device (``getDevice``, ``Motor.getPositionSensor()``, ``DistanceSensor('ps0')``) share it.
+"""
+
+from __future__ import annotations
+
+import sys
+import weakref
+from collections.abc import Callable
+from typing import Any
+
+from .wire import Wire, WireClosed
+
+NAN = float("nan")
+ROBOT_TAG = -1
+MAX_KEYS = 7
+
+
+def error(message: str) -> None:
+    """Print one line to stderr, the way Webots' library reports misuse."""
+    print(message, file=sys.stderr)
+
+
+class DeviceState:
+    """What the controller library keeps about one device tag."""
+
+    def __init__(self, info: dict) -> None:
+        self.tag = int(info["tag"])
+        self.name = str(info.get("name") or "")
+        self.model = str(info.get("model") or "")
+        self.type = str(info.get("type") or "")
+        self.info = info
+        self.fields: dict = info.get("fields") or {}
+        self.period = 0
+        self.value: Any = None
+        self.absorb: Callable[[DeviceState, Any], None] | None = None
+
+    def field(self, name: str, default: Any = None) -> Any:
+        """The INIT value of a Webots field, or ``default`` when absent or None."""
+        value = self.fields.get(name)
+        return default if value is None else value
+
+
+class Session:
+    """The controller's side of one simulator connection."""
+
+    def __init__(self, wire: Wire, init: dict) -> None:
+        self.wire = wire
+        robot = init.get("robot") or {}
+        self.robot: dict = robot
+        self.name = str(robot.get("name") or "")
+        self.model = str(robot.get("model") or "")
+        self.custom_data = str(robot.get("custom_data") or "")
+        self.basic_time_step = float(robot.get("basic_time_step") or 32.0)
+        self.project_path = str(robot.get("project_path") or "")
+        self.world_path = str(robot.get("world_path") or "")
+        self.supervisor = bool(robot.get("supervisor", False))
+        self.synchronization = bool(robot.get("synchronization", True))
+        self.coordinate_system = str(robot.get("coordinate_system") or "ENU")
+        self.time = float(init.get("time") or 0.0)
+        self.states = [DeviceState(info) for info in init.get("devices") or []]
+        self.by_tag = {state.tag: state for state in self.states}
+        self.commands: list[tuple] = []
+        self.ended = False
+        self.in_step = False
+        self.keyboard_period = 0
+        self.keys: list[int] = []
+        self.key_pointer = 0  # -1 while an enable request waits for the next step, as in Webots
+        self.battery_period = 0
+        self.battery_value = 0.0
+        self.motions: list[weakref.ref] = []
+
+    # -- devices and commands -------------------------------------------------------------------------------
+    def find(self, name: str) -> DeviceState | None:
+        """The first device with that name (Webots' ``wb_robot_get_device``)."""
+        for state in self.states:
+            if state.name == name:
+                return state
+        return None
+
+    def queue(self, tag: int, op: str, *args: Any) -> None:
+        """Buffer a command for the next step."""
+        self.commands.append((tag, op, *args))
+
+    # -- stepping -------------------------------------------------------------------------------------------
+    def step(self, duration: int) -> int:
+        """``wb_robot_step``: send the buffered commands, wait for the reply."""
+        if self.in_step:
+            error("Warning: wb_robot_step() called before calling wb_robot_step_end().")
+            if self.step_end() == -1:
+                return -1
+        result = self.step_begin(duration, warn=False)
+        if result != -1:
+            result = self.step_end()
+        return result
+
+    def step_begin(self, duration: int, warn: bool = True) -> int:
+        """Send the step frame; returns 0, or -1 once the simulation is over."""
+        if self.in_step:
+            if warn:
+                error("Warning: robot_step_begin() called multiple times before calling wb_robot_step_end().")
+            return -1 if self.ended else 0
+        if self.ended:
+            return -1
+        duration = int(duration)
+        self._play_motions(duration)
+        if self.key_pointer == -1:
+            self.key_pointer = 0
+        if self.battery_value < 0.0:
+            self.battery_value = 0.0
+        commands, self.commands = self.commands, []
+        try:
+            self.wire.send(("step", duration, commands))
+        except OSError:
+            self.ended = True
+            return -1
+        self.in_step = True
+        return 0
+
+    def step_end(self) -> int:
+        """Read the step reply and update every sampled device; returns the status (-1 once over)."""
+        if self.ended and not self.in_step:
+            return -1
+        if not self.in_step:
+            error("Warning: robot_step_end() called multiple times before calling wb_robot_step_begin().")
+            return 0
+        self.in_step = False
+        if self.keyboard_period:
+            self.keys = []
+            if self.key_pointer != -1:
+                self.key_pointer = 0
+        try:
+            reply = self.wire.recv()
+        except (OSError, WireClosed):
+            self.ended = True
+            return -1
+        self._absorb(reply)
+        status = int(reply.get("status", 0))
+        if status == -1:
+            self.ended = True
+        return status
+
+    def _absorb(self, reply: dict) -> None:
+        if "time" in reply:
+            self.time = float(reply["time"])
+        for tag, value in (reply.get("values") or {}).items():
+            state = self.by_tag.get(tag)
+            if state is None:
+                continue
+            if state.absorb is None:
+                state.value = value
+            else:
+                state.absorb(state, value)
+        keys = reply.get("keys")
+        if keys is not None:
+            self.keys = [int(k) for k in keys[:MAX_KEYS]]
+        if reply.get("battery") is not None:
+            self.battery_value = float(reply["battery"])
+
+    def _play_motions(self, duration: int) -> None:
+        if duration <= 0 or not self.motions:
+            return
+        alive = [ref for ref in self.motions if ref() is not None]
+        self.motions = alive
+        for ref in alive:
+            motion = ref()
+            if motion is not None:
+                motion._play_step(duration)
+
+    # -- synchronous calls ----------------------------------------------------------------------------------
+    def call(self, tag: int, op: str, *args: Any, function: str = "", default: Any = None) -> Any:
+        """Ask the simulator and wait for the answer; prints the simulator's error and returns ``default``."""
+        if self.in_step:
+            error(
+                f"Warning: {function or op}(): functions with immediate requests to Webots cannot be implemented "
+                "in-between wb_robot_step_begin() and wb_robot_step_end()!"
+            )
+            return default
+        if self.ended:
+            return default
+        try:
+            self.wire.send(("call", tag, op, tuple(args)))
+            reply = self.wire.recv()
+        except (OSError, WireClosed):
+            self.ended = True
+            return default
+        if "error" in reply:
+            error(str(reply["error"]))
+            return default
+        return reply.get("result", default)
+
+
+_current: Session | None = None
+
+
+def current() -> Session | None:
+    """The session opened by ``Robot()``, if any."""
+    return _current
+
+
+def require() -> Session:
+    """The session; aborts like Webots when a device is used before ``Robot()``."""
+    if _current is None:
+        error("Abort: wb_robot_init() must be called before any other Webots function.")
+        sys.exit(1)
+    return _current
+
+
+def start() -> Session:
+    """Connect to the simulator and read INIT (exits with code 1 when that is impossible)."""
+    global _current
+    try:
+        wire = Wire.from_environment()
+    except (OSError, ValueError) as exc:
+        error(f"wbtc: cannot connect to the simulator: {exc}")
+        sys.exit(1)
+    if wire is None:
+        error(
+            "wbtc: this controller must be started by `wbtc run` (or, for an extern controller, with "
+            "WBTC_CONTROLLER_URL=unix:/path/to/socket?robot=NAME); neither WBTC_CONTROLLER_FD nor "
+            "WBTC_CONTROLLER_URL is set."
+        )
+        sys.exit(1)
+    try:
+        init = wire.recv()
+    except (OSError, WireClosed) as exc:
+        error(f"wbtc: the simulator closed the connection before describing the robot ({exc}).")
+        sys.exit(1)
+    _current = Session(wire, init)
+    return _current

@@ -1,0 +1,183 @@
+"""The connection between a controller process and the wbtc simulator.
+
+Standard library only: this module is imported by controller processes (any Python >= 3.8) and may be imported
+by the simulator side too (``wbtc._child.controller.wire``) so that both ends frame messages the same way.
+
+Transport
+    ``WBTC_CONTROLLER_FD`` holds the number of an inherited, connected AF_UNIX SOCK_STREAM socket. Otherwise
+    ``WBTC_CONTROLLER_URL`` (extern controllers) is ``unix:/path/to/socket[?robot=NAME]``: the child connects to
+    that path and first sends the frame ``("hello", NAME or None)``. With neither set, ``Robot()`` prints a message
+    to stderr and exits with code 1.
+
+Frames (both ways)
+    A 4-byte little-endian unsigned length, then a pickle (protocol 4) of builtins only (dict, list, tuple, str,
+    bytes, float, int, bool, None). The child refuses to unpickle anything that names a global (class, function).
+
+INIT, simulator -> child, first frame on connection
+    ``{"robot": {"name", "model", "custom_data", "basic_time_step" (float ms), "project_path", "world_path",
+    "supervisor" (bool), "synchronization" (bool), "coordinate_system" ("ENU"/"NUE"/"EUN")}, "time": float s,
+    "devices": [{"tag": int, "name": str, "type": Webots base node type name ("RotationalMotor", "DistanceSensor",
+    ...), "model": str, "fields": {Webots field name: plain value}, ...}]}``. Lookup tables are lists of
+    ``[in, out, noise]`` rows, colours ``[r, g, b]`` lists; an SFNode field (Camera ``focus``/``zoom``/
+    ``recognition``) is read as None or a dict of that node's fields (optionally nested under a ``"fields"`` key).
+    Motors add ``"position"`` (initial joint position), ``"sensor"`` and ``"brake"`` (tags or None); position
+    sensors add ``"motor"`` (tag or None). Tags are the ``getDeviceByIndex`` indices. The keyboard is no device.
+
+Step, child -> simulator
+    ``("step", duration_ms: int, commands: list)``: the calls buffered since the previous step, in call order, as
+    tuples ``(tag, op, *args)``; robot-level ones use tag -1. Values are already validated the way Webots' C
+    library does (the simulator applies maxVelocity clamping and prints that warning itself). Ops:
+
+    * sensors: ``("enable", period_ms)``, ``("disable",)``;
+    * motors: ``setPosition``, ``setVelocity``, ``setAcceleration``, ``setAvailableForce``, ``setAvailableTorque``,
+      ``setControlPID`` (p, i, d), ``setForce``, ``setTorque``, ``enableForceFeedback``/``enableTorqueFeedback``
+      (period), ``disableForceFeedback``/``disableTorqueFeedback``;
+    * LED ``("set", int)``; Pen ``("write", bool)``, ``("setInkColor", rgb_int, density)``;
+    * Emitter ``("send", bytes)``, ``("setChannel", c)``, ``("setRange", r)``; Receiver ``("setChannel", c)``;
+    * Camera ``("setFov", f)``, ``("setExposure", e)``, ``("setFocalDistance", d)``, ``("recognitionEnable", p)``,
+      ``("recognitionDisable",)``; Lidar ``("enablePointCloud",)``, ``("disablePointCloud",)``,
+      ``("setFrequency", f)``;
+    * Speaker, Display, Brake, Connector, VacuumGripper, Skin: the method name with its arguments, e.g.
+      ``(left, "playSound", right_tag, sound, volume, pitch, balance, loop)``, ``("drawLine", x1, y1, x2, y2)``.
+      Display image handles are ints allocated by the child and passed first (``("imageNew", handle, data,
+      format, width, height)``, ``("imageCopy", handle, x, y, w, h)``, ``("imageLoad", handle, abs_path)``);
+    * robot: ``(-1, "setCustomData", s)``, ``(-1, "keyboardEnable", p)``, ``(-1, "keyboardDisable")``,
+      ``(-1, "batterySensorEnable", p)``, ``(-1, "batterySensorDisable")``.
+
+Step reply, simulator -> child
+    ``{"status": 0 or -1, "time": float s, "values": {tag: value}, "keys": [int] (optional), "battery": float
+    (optional)}``. ``values`` holds only the sensors sampled during that step. Value shapes: DistanceSensor,
+    PositionSensor, LightSensor, Altimeter, TouchSensor (bumper/force), motor feedback -> float; TouchSensor
+    force-3d, Accelerometer, Gyro, Compass -> [3 floats]; GPS -> [x, y, z, vx, vy, vz]; InertialUnit -> [x, y, z, w];
+    Receiver -> list of (data: bytes, channel: int, signal_strength: float, direction: [3 floats]) appended to its
+    queue; Camera -> {"shm": shared-memory block name or None, "data": BGRA bytes or None, "width", "height",
+    "objects": [recognition dicts] (optional)}; Lidar -> {"ranges": [floats], "points": [(x, y, z, layer, time)]
+    (optional)}; RangeFinder -> {"ranges": [floats]} or a camera-like dict of float32 bytes; Radar -> list of
+    (distance, received_power, speed, azimuth); Connector/VacuumGripper presence -> int. ``keys`` lists the keys
+    down at that keyboard sample. After status -1, ``step()`` returns -1 for good and the process has one second
+    to exit; a closed socket also makes ``step()`` return -1.
+
+Calls (synchronous queries, e.g. for the Supervisor API)
+    ``("call", tag, op, args_tuple)`` answered by ``{"result": value}`` or ``{"error": message}`` (the child prints
+    the message to stderr verbatim). A call frame carries no buffered commands; those only travel with ``step``.
+    Calls are refused child-side between ``stepBegin`` and ``stepEnd``, as in Webots. Used so far by
+    ``Skin.getBoneOrientation``/``getBonePosition`` (ops of those names, args ``(index, absolute)``).
+
+Notes for the simulator side
+    * Webots' C library keeps only the last value of each kind of command per step; here every call is sent, in
+      order, so applying them in order gives the same final state.
+    * A camera's shared-memory block stays mapped by name: give a resized or re-created block a new name.
+    * Start the child with ``python -u`` (or ``PYTHONUNBUFFERED=1``) so that its prints are not block-buffered.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+import pickle
+import socket
+import struct
+from typing import Any
+from urllib.parse import parse_qs, unquote
+
+PROTOCOL = 4
+_HEADER = struct.Struct("<I")
+
+
+class WireClosed(EOFError):
+    """The other end closed the connection."""
+
+
+class _BuiltinsOnly(pickle.Unpickler):
+    def find_class(self, module: str, name: str) -> Any:
+        raise pickle.UnpicklingError(f"wbtc wire: refusing to load {module}.{name}; frames hold builtins only")
+
+
+def encode(obj: Any) -> bytes:
+    """Return one frame (length header and pickle) for a message of builtins."""
+    payload = pickle.dumps(obj, protocol=PROTOCOL)
+    return _HEADER.pack(len(payload)) + payload
+
+
+def decode(payload: bytes) -> Any:
+    """Unpickle a frame's payload, refusing anything but builtins."""
+    return _BuiltinsOnly(io.BytesIO(payload)).load()
+
+
+def _recv_exactly(sock: socket.socket, size: int) -> bytes:
+    buffer = bytearray(size)
+    view = memoryview(buffer)
+    got = 0
+    while got < size:
+        n = sock.recv_into(view[got:], size - got)
+        if n == 0:
+            raise WireClosed("the connection was closed")
+        got += n
+    return bytes(buffer)
+
+
+def send_frame(sock: socket.socket, obj: Any) -> None:
+    """Send one message as a frame."""
+    sock.sendall(encode(obj))
+
+
+def recv_frame(sock: socket.socket) -> Any:
+    """Receive one message; raises WireClosed when the peer has closed the connection."""
+    (size,) = _HEADER.unpack(_recv_exactly(sock, _HEADER.size))
+    return decode(_recv_exactly(sock, size))
+
+
+def parse_url(url: str) -> tuple[str, str | None]:
+    """Split ``unix:/path/to/socket[?robot=NAME]`` into the socket path and the robot name (or None)."""
+    if not url.startswith("unix:"):
+        raise ValueError(f"unsupported controller URL {url!r}: expected unix:/path/to/socket[?robot=NAME]")
+    rest = url[len("unix:"):]
+    path, _, query = rest.partition("?")
+    robots = parse_qs(query).get("robot") if query else None
+    return unquote(path), (robots[0] if robots else None)
+
+
+class Wire:
+    """A framed, blocking connection to the simulator."""
+
+    def __init__(self, sock: socket.socket) -> None:
+        self.sock = sock
+
+    @classmethod
+    def from_environment(cls, environ: dict[str, str] | None = None) -> Wire | None:
+        """Connect as the environment says (FD first, then URL); None when neither variable is set.
+
+        Raises:
+            OSError: the inherited socket or the URL's socket cannot be used.
+            ValueError: a variable holds something malformed.
+        """
+        env = os.environ if environ is None else environ
+        fd = env.get("WBTC_CONTROLLER_FD")
+        if fd:
+            sock = socket.socket(fileno=int(fd))
+            sock.set_inheritable(False)
+            return cls(sock)
+        url = env.get("WBTC_CONTROLLER_URL")
+        if url:
+            path, robot = parse_url(url)
+            sock = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
+            sock.connect(path)
+            wire = cls(sock)
+            wire.send(("hello", robot))
+            return wire
+        return None
+
+    def send(self, obj: Any) -> None:
+        """Send one message."""
+        send_frame(self.sock, obj)
+
+    def recv(self) -> Any:
+        """Receive one message (raises WireClosed at end of stream)."""
+        return recv_frame(self.sock)
+
+    def close(self) -> None:
+        """Close the socket."""
+        try:
+            self.sock.close()
+        except OSError:
+            pass
