@@ -5,6 +5,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parent.parent
 SHARED = REPO.parent / "shared"
 CORPUS = SHARED / "corpus"
+LESSONS = CORPUS.parent / "lessons"
 
 
 def corpus_files(*suffixes: str) -> list[Path]:

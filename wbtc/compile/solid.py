@@ -12,8 +12,8 @@ inertials and every geom is massless to MuJoCo.
 
 Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `recognitionColors` (used by
 the runtime's camera recognition, not here), `locked`, hidden `linearVelocity`/`angularVelocity`;
-Physics `damping` is approximated with free-joint damping; Robot `battery`, `cpuConsumption`,
-`selfCollision` (MuJoCo never collides a body with its parent, other pairs do collide).
+Physics `damping` is approximated with free-joint damping; Robot `battery`, `cpuConsumption`.
+Robot `selfCollision FALSE` (the default) excludes every pair of the robot's colliding bodies.
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "linearVelocity",
-                         "angularVelocity", "battery", "selfCollision"})
+                         "angularVelocity", "battery"})
 JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
 #: Mass of a body that moves on a joint but has no Physics node (Webots moves it kinematically).
 KINEMATIC_MASS = 1e-3
@@ -147,6 +147,8 @@ class BodyBuilder:
         self.walk_children(node.get("children"), body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)
+        if node.is_a("Robot") and not node.get("selfCollision"):
+            _exclude_self_collisions(body, ctx)
         return body
 
     def _bounding(self, bounding: object, body: mujoco.MjsBody, frame: Frame,
@@ -173,6 +175,15 @@ class BodyBuilder:
             for child in bounding.get("children") or []:
                 props += self._bounding(child, body, frame, solid)
         return props
+
+
+def _exclude_self_collisions(robot: mujoco.MjsBody, ctx: CompileContext) -> None:
+    """Webots' `selfCollision FALSE` (the default): no two parts of a robot collide with each other."""
+    bodies = [robot, *robot.find_all(mujoco.mjtObj.mjOBJ_BODY)]
+    solid = [b for b in bodies if any(g.contype for g in b.geoms)]
+    for i, first in enumerate(solid):
+        for second in solid[i + 1:]:
+            ctx.spec.add_exclude(bodyname1=first.name, bodyname2=second.name)
 
 
 def _body_name(node: Node, robot: RobotEntry | None) -> str:

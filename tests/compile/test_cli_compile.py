@@ -1,0 +1,82 @@
+"""`wbtc compile`: the one-line summary, a loadable MJCF, errors and --strict without output files."""
+
+from pathlib import Path
+
+import mujoco
+from typer.testing import CliRunner
+
+from wbtc.cli import app
+
+WORLDS = Path(__file__).parent / "fixtures" / "worlds"
+runner = CliRunner()
+
+
+def test_compile_prints_the_summary_and_writes_loadable_mjcf(tmp_path: Path) -> None:
+    out = tmp_path / "robot.xml"
+    result = runner.invoke(app, ["compile", str(WORLDS / "two_wheel_robot.wbt"), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.splitlines() == [
+        f"{out}: 7 bodies, 3 joints, 2 actuators, 8 geoms, 1 robots, 7 devices",
+    ]
+    assert result.stderr == ""
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert (model.nbody - 1, model.njnt, model.nu, model.ngeom) == (7, 3, 2, 8)
+    assert model.opt.timestep == 0.002
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["robot.xml"]  # no textures, no temporary files
+
+
+def test_compile_writes_textures_beside_the_mjcf(tmp_path: Path) -> None:
+    out = tmp_path / "lights.xml"
+    result = runner.invoke(app, ["compile", str(WORLDS / "lights.wbt"), "--output", str(out)])
+    assert result.exit_code == 0, result.output
+    assert result.stdout.strip() == f"{out}: 1 bodies, 0 joints, 0 actuators, 5 geoms, 0 robots, 0 devices"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["lights.xml", "lights_assets"]
+    assert len(list((tmp_path / "lights_assets").glob("*.png"))) == 1
+    model = mujoco.MjModel.from_xml_path(str(out))
+    assert model.ntex == 2 and model.nmat == 2  # the sky and the checker texture
+
+
+def test_physics_step_option_sets_the_substep(tmp_path: Path) -> None:
+    out = tmp_path / "t.xml"
+    result = runner.invoke(app, ["compile", str(WORLDS / "timestep_32.wbt"), "-o", str(out), "--physics-step", "4"])
+    assert result.exit_code == 0, result.output
+    assert mujoco.MjModel.from_xml_path(str(out)).opt.timestep == 0.004
+
+
+def test_world_with_an_error_exits_1_at_its_line_and_writes_nothing(tmp_path: Path) -> None:
+    world = WORLDS / "syntax_error.wbt"
+    out = tmp_path / "bad.xml"
+    result = runner.invoke(app, ["compile", str(world), "-o", str(out)])
+    assert result.exit_code == 1
+    assert result.stderr.splitlines()[0] == f"{world}:7:3: error: unknown field 'boundingObjekt' in Solid"
+    assert "Traceback" not in result.output
+    assert result.stdout == ""
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_missing_world_exits_1(tmp_path: Path) -> None:
+    result = runner.invoke(app, ["compile", str(tmp_path / "none.wbt"), "-o", str(tmp_path / "none.xml")])
+    assert result.exit_code == 1
+    assert "no such world file" in result.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_unhonoured_field_warns_and_still_compiles(tmp_path: Path) -> None:
+    world = WORLDS / "radar_cross_section.wbt"
+    out = tmp_path / "radar.xml"
+    result = runner.invoke(app, ["compile", str(world), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    assert result.stderr.splitlines()[0] == (
+        f"{world}:8:3: warning: Solid.radarCrossSection is not honoured by wbtc yet; it is ignored")
+    assert out.is_file()
+
+
+def test_strict_turns_an_unhonoured_field_into_an_error(tmp_path: Path) -> None:
+    world = WORLDS / "radar_cross_section.wbt"
+    out = tmp_path / "radar.xml"
+    result = runner.invoke(app, ["compile", str(world), "-o", str(out), "--strict"])
+    assert result.exit_code == 1
+    assert result.stderr.splitlines()[0] == (
+        f"{world}:8:3: error: Solid.radarCrossSection is not honoured by wbtc yet; it is ignored")
+    assert result.stdout == ""
+    assert list(tmp_path.iterdir()) == []
