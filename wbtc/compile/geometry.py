@@ -93,7 +93,9 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
     if collision:
         geom.group = COLLISION_GROUP
         geom.contype, geom.conaffinity = 1, 1
-        geom.rgba = [0.5, 0.5, 0.5, 0.0]
+        # Not transparent: MuJoCo ray casts (generic distance sensors) skip geoms with alpha 0; group 3
+        # keeps them hidden in the viewer anyway.
+        geom.rgba = [0.9, 0.5, 0.1, 0.4]
         return geom, _mass_props(geom_spec)
     geom.group = VISUAL_GROUP
     geom.contype, geom.conaffinity = 0, 0

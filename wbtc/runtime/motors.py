@@ -87,9 +87,6 @@ class Motor:
             model.actuator_biasprm[a, 2] = 0.0
             data.ctrl[a] = self.torque
             return
-        self._limit_gain(data)
-        model.actuator_gainprm[a, 0] = self.gain
-        model.actuator_biasprm[a, 2] = -self.gain
         if math.isinf(self.target):
             wanted = self.velocity
         else:
@@ -104,19 +101,20 @@ class Motor:
             step = self.acceleration * ts
             wanted = min(max(wanted, self.command - step), self.command + step)
         self.command = wanted
+        self._limit_gain(data, wanted)
+        model.actuator_gainprm[a, 0] = self.gain
+        model.actuator_biasprm[a, 2] = -self.gain
         data.ctrl[a] = wanted
 
-    def _limit_gain(self, data: mujoco.MjData) -> None:
+    def _limit_gain(self, data: mujoco.MjData, wanted: float) -> None:
         """Keep the servo's effort within the available torque by lowering its gain.
 
-        The gain goes down in proportion when the last step needed more than the limit, and back up
-        (doubling, at most to the nominal stiffness) when it needed less.
+        The servo's force is gain × (target − velocity) and only shrinks as the joint catches up, so
+        capping the gain at available / |target − velocity| at the start of each basic step keeps
+        the effort within the limit without clamping (which would lose the implicit damping).
         """
-        force = abs(float(data.actuator_force[self.actuator]))
-        if force > self.available * 1.001 and force > 0:
-            self.gain = max(self.gain * self.available / force, 1e-9)
-        else:
-            self.gain = min(self.gain * 2.0, self.kv)
+        error = abs(wanted - float(data.qvel[self.dof_adr]))
+        self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
 
     def feedback(self, data: mujoco.MjData) -> float:
         """The torque/force the actuator applied (torque feedback)."""
