@@ -18,26 +18,15 @@ import sys
 import time
 from pathlib import Path
 
+from timing import REPO, best_of, largest_world
+
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.meshes import clear_mesh_cache
 from wbtc.compile.textures import clear_texture_cache
 from wbtc.pipeline import load_world
 
-REPO = Path(__file__).resolve().parents[1]
-CORPUS = REPO.parent / "shared" / "corpus"
 EPUCK = REPO / "worlds" / "epuck_obstacles.wbt"
 RUNS = 10
-
-
-def best_of(action, runs: int = RUNS, before=None) -> float:
-    times = []
-    for _ in range(runs):
-        if before is not None:
-            before()
-        start = time.perf_counter()
-        action()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def clear_caches() -> None:
@@ -53,8 +42,8 @@ def bench(world: Path, goal_s: float) -> None:
     result = compile_scene(scene)
     first_s = time.perf_counter() - start
     load_s = best_of(lambda: load_world(world), runs=max(3, RUNS // 2))
-    fresh_s = best_of(lambda: compile_scene(scene), before=clear_caches)
-    warm_s = best_of(lambda: compile_scene(scene))
+    fresh_s = best_of(lambda: compile_scene(scene), runs=RUNS, before=clear_caches)
+    warm_s = best_of(lambda: compile_scene(scene), runs=RUNS)
     print(f"world: {world.name} ({world.stat().st_size / 1e6:.3f} MB): {result.summary()}")
     print(f"  parse + scene + expand, first run: {load_first_s * 1000:8.1f} ms")
     print(f"  parse + scene + expand, best of {max(3, RUNS // 2)}: {load_s * 1000:8.1f} ms")
@@ -81,7 +70,7 @@ def main() -> None:
         for name in sys.argv[1:]:
             bench(Path(name), 3.0)
         return
-    largest = max(CORPUS.rglob("*.wbt"), key=lambda p: p.stat().st_size)
+    largest = largest_world()
     bench(EPUCK, 0.1)
     bench(largest, 3.0)
 

@@ -15,13 +15,14 @@ import sys
 import time
 from pathlib import Path
 
+from timing import best_of, largest_world
+
 from wbtc.proto import expand
 from wbtc.proto.expand import expand_scene
 from wbtc.proto.model import load_proto
 from wbtc.scene import build_scene
 from wbtc.vrml import parse_file
 
-CORPUS = Path(__file__).resolve().parents[1].parent / "shared" / "corpus"
 GOAL_S = 2.0
 
 
@@ -38,23 +39,14 @@ def front(world: Path) -> tuple[float, int]:
     return time.perf_counter() - start, sum(expansion.counts.values())
 
 
-def best_of(world: Path, fresh: bool, runs: int = 5) -> float:
-    times = []
-    for _ in range(runs):
-        if fresh:
-            clear_caches()
-        times.append(front(world)[0])
-    return min(times)
-
-
 def main() -> None:
     if len(sys.argv) > 1:
         world = Path(sys.argv[1])
     else:
-        world = max(CORPUS.rglob("*.wbt"), key=lambda p: p.stat().st_size)
+        world = largest_world()
     first_s, instances = front(world)
-    fresh_s = best_of(world, fresh=True)
-    warm_s = best_of(world, fresh=False)
+    fresh_s = best_of(lambda: front(world), before=clear_caches)
+    warm_s = best_of(lambda: front(world))
     print(f"world: {world.name} ({world.stat().st_size / 1e6:.2f} MB, {instances} PROTO instances)")
     print(f"first run (cold process):   {first_s * 1000:8.1f} ms")
     print(f"fresh caches, best of 5:    {fresh_s * 1000:8.1f} ms")

@@ -5,29 +5,19 @@ Run: python bench/parse.py [WORLD]
 """
 
 import sys
-import time
 from pathlib import Path
+
+from timing import best_of, largest_world
 
 from wbtc.scene import build_scene
 from wbtc.vrml import parse_file, parse_text
-
-CORPUS = Path(__file__).resolve().parents[1].parent / "shared" / "corpus"
-
-
-def best_of(action, runs: int = 5) -> float:
-    times = []
-    for _ in range(runs):
-        start = time.perf_counter()
-        action()
-        times.append(time.perf_counter() - start)
-    return min(times)
 
 
 def main() -> None:
     if len(sys.argv) > 1:
         world = Path(sys.argv[1])
     else:
-        world = max(CORPUS.rglob("*.wbt"), key=lambda p: p.stat().st_size)
+        world = largest_world()
     text = world.read_text(encoding="utf-8")
     lines = text.count("\n") + 1
     parse_file(world)  # warm up: grammar tables loaded once per process

@@ -14,7 +14,6 @@ ImageTexture `filtering`.
 from __future__ import annotations
 
 import hashlib
-import io
 
 import mujoco
 import numpy as np
@@ -120,22 +119,9 @@ def _texture(ctx: CompileContext, path: str) -> str:
     if ctx.spec.texture(name) is not None:
         return name
     file_name = f"{name}.png"
-    ctx.spec.assets[file_name] = _png_bytes(path)
+    ctx.spec.assets[file_name] = textures.png_bytes(path)
     texture = ctx.spec.add_texture(name=name, type=mujoco.mjtTexture.mjTEXTURE_2D)
     texture.file = file_name
     ctx.texture_paths[name] = path
     return name
 
-
-def _png_bytes(path: str) -> bytes:
-    """The image at `path` as PNG bytes (MuJoCo reads PNG textures only)."""
-    from PIL import Image
-
-    texture = textures.load_texture(path)
-    if texture.alpha and texture.alpha_values is not None:
-        image = Image.fromarray(np.dstack([texture.rgb, texture.alpha_values]), "RGBA")
-    else:
-        image = Image.fromarray(texture.rgb, "RGB")
-    buffer = io.BytesIO()
-    image.save(buffer, format="PNG")
-    return buffer.getvalue()

@@ -22,6 +22,7 @@ Not honoured yet:
 from __future__ import annotations
 
 import hashlib
+import io
 import math
 import os
 import re
@@ -154,19 +155,26 @@ def texture_to_png(path: str, out_dir: str) -> str:
     name = f"{stem}-{digest}.png"
     target = os.path.join(out_dir, name)
     if not os.path.exists(target):
-        from PIL import Image
-
-        texture = load_texture(path)
-        if texture.alpha and texture.alpha_values is not None:
-            pixels = np.dstack([texture.rgb, texture.alpha_values])
-            image = Image.fromarray(pixels, "RGBA")
-        else:
-            image = Image.fromarray(texture.rgb, "RGB")
         os.makedirs(out_dir, exist_ok=True)
         partial = f"{target}.{os.getpid()}.tmp"
-        image.save(partial, format="PNG")
+        with open(partial, "wb") as out:
+            out.write(png_bytes(path))
         os.replace(partial, target)  # no half-written file under the final name
     return name
+
+
+def png_bytes(path: str) -> bytes:
+    """The image at `path` as PNG bytes (MuJoCo reads PNG textures only): RGBA if transparent, else RGB."""
+    from PIL import Image
+
+    texture = load_texture(path)
+    if texture.alpha and texture.alpha_values is not None:
+        image = Image.fromarray(np.dstack([texture.rgb, texture.alpha_values]), "RGBA")
+    else:
+        image = Image.fromarray(texture.rgb, "RGB")
+    buffer = io.BytesIO()
+    image.save(buffer, format="PNG")
+    return buffer.getvalue()
 
 
 def mean_color(path: str) -> tuple[float, float, float]:

@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from wbtc.compile.table import DeviceEntry, plain
 from wbtc.runtime.devices import Receiver
 from wbtc.runtime.simulation import RobotState, Simulation
 
@@ -22,7 +21,7 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
     devices = []
     for tag, dev in enumerate(entry.devices):
         info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
-                                "model": str(dev.fields.get("model", "") or ""), "fields": _fields(dev)}
+                                "model": str(dev.fields.get("model", "") or ""), "fields": dev.fields}
         if dev.actuator:
             info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=None)
         if dev.type == "PositionSensor":
@@ -35,10 +34,6 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
                   "coordinate_system": sim.table.coordinate_system},
         "time": sim.time, "devices": devices,
     }
-
-
-def _fields(dev: DeviceEntry) -> dict[str, Any]:
-    return {k: plain(v) for k, v in dev.fields.items()}
 
 
 def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple]) -> None:

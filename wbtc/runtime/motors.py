@@ -120,13 +120,3 @@ class Motor:
         """The torque/force the actuator applied (torque feedback)."""
         return float(data.actuator_force[self.actuator])
 
-
-def joint_position(data: mujoco.MjData, qpos_adr: int) -> float:
-    """A hinge or slider's position (MuJoCo's value equals Webots': the joint's ref is its `position`)."""
-    return float(data.qpos[qpos_adr])
-
-
-def motors_for(entries: list[DeviceEntry], model: mujoco.MjModel, robot_name: str) -> dict[str, Motor]:
-    """Runtime motors of one robot, by device name."""
-    return {e.name: Motor(e, model, robot_name) for e in entries if e.actuator}
-

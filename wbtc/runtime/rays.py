@@ -75,14 +75,18 @@ class RayCaster:
         self.collision = np.zeros(6, dtype=np.uint8)
         self.collision[COLLISION_GROUP] = 1
         self._geom = np.zeros(1, dtype=np.int32)
+        self.normal = np.zeros(3)  # the surface normal at the last hit
 
     def cast(self, start: np.ndarray, direction: np.ndarray, max_range: float, visual: bool,
              skip_bodies: frozenset[int]) -> tuple[float, int]:
-        """Distance to the first hit within `max_range` (inf if none) and the geom hit (-1)."""
+        """Distance to the first hit within `max_range` (inf if none) and the geom hit (-1).
+
+        The hit surface's normal is left in `self.normal`.
+        """
         groups = self.visual if visual else self.collision
         travelled, point = 0.0, np.array(start, dtype=float)
         for _ in range(8):
-            dist = mujoco.mj_ray(self.model, self.data, point, direction, groups, 1, -1, self._geom)
+            dist = mujoco.mj_ray(self.model, self.data, point, direction, groups, 1, -1, self._geom, self.normal)
             geom = int(self._geom[0])
             if dist < 0 or travelled + dist > max_range:
                 return math.inf, -1

@@ -47,7 +47,6 @@ class Link:
     status: str = "exited"
     exit_code: int | None = None
     wake_ms: float = math.inf
-    controller: str = ""
 
 
 @dataclass
@@ -66,7 +65,8 @@ class RunOutcome:
         robots = []
         for link in self.links:
             pos, rot = self.sim.robot_pose(link.robot)
-            robots.append({"name": link.robot.entry.name, "controller": link.controller, "status": link.status,
+            entry = link.robot.entry
+            robots.append({"name": entry.name, "controller": entry.controller, "status": link.status,
                            "exit_code": link.exit_code, "position": pos, "rotation": rot,
                            "distance": link.robot.distance})
         factor = self.sim_time / self.wall_time if self.wall_time > 0 else math.inf
@@ -80,7 +80,7 @@ def start_controllers(sim: Simulation, world: Path) -> list[Link]:
     project = str(world.resolve().parent.parent)
     for robot in sim.robots:
         name = robot.entry.controller
-        link = Link(robot, None, controller=name)
+        link = Link(robot, None)
         if name == "<extern>":
             link.process = ControllerProcess.extern(robot.entry.name)
         elif name not in NO_CONTROLLER:

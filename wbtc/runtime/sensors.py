@@ -35,6 +35,9 @@ if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
 
 
+_SONAR_COS = math.cos(math.pi / 8)
+
+
 class Sensor:
     """A sampled device: period, due time, last value."""
 
@@ -94,7 +97,8 @@ class DistanceSensor(Sensor):
         for direction, weight in zip(self.dirs, self.weights, strict=True):
             world_dir = mat @ direction
             dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies)
-            if self.kind == "sonar" and geom >= 0 and not _sonar_ok(sim, pos, world_dir, dist):
+            # A sonar echo returns only when the ray meets the surface within π/8 of its normal.
+            if self.kind == "sonar" and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
                 dist = math.inf
             hit = math.isfinite(dist)
             nearest = min(nearest, dist)
@@ -106,33 +110,6 @@ class DistanceSensor(Sensor):
         distance = (nearest if math.isfinite(nearest) else self.range) if self.kind in ("sonar", "laser") \
             else num / den
         return apply(self.table, distance, sim.noise_rng, self.resolution)
-
-
-def _sonar_ok(sim: Simulation, pos: np.ndarray, direction: np.ndarray, dist: float) -> bool:
-    """A sonar echo returns only when the ray meets the surface within π/8 of its normal."""
-    probe = pos + direction * (dist - 1e-4)
-    normal = _surface_normal(sim, probe, direction, dist)
-    return normal is None or abs(float(np.dot(normal, -direction))) > math.cos(math.pi / 8)
-
-
-def _surface_normal(sim: Simulation, probe: np.ndarray, direction: np.ndarray, dist: float) -> np.ndarray | None:
-    # Estimate the normal from two neighbouring rays (MuJoCo's ray cast gives no normal).
-    side = np.cross(direction, [0.0, 0.0, 1.0])
-    if np.linalg.norm(side) < 1e-6:
-        side = np.cross(direction, [1.0, 0.0, 0.0])
-    side /= np.linalg.norm(side)
-    up = np.cross(side, direction)
-    start = probe - direction * 0.05
-    points = []
-    for offset in (side * 1e-3, up * 1e-3):
-        d, _ = sim.rays.cast(start + offset, direction, 1.0, False, frozenset())
-        if not math.isfinite(d):
-            return None
-        points.append(start + offset + direction * d)
-    centre = probe + direction * 1e-4
-    normal = np.cross(points[0] - centre, points[1] - centre)
-    norm = np.linalg.norm(normal)
-    return normal / norm if norm > 0 else None
 
 
 class PositionSensor(Sensor):

@@ -15,6 +15,7 @@ import numpy as np
 
 from wbtc.compile import textures
 from wbtc.compile.compiler import CompileResult
+from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.motors import Motor
@@ -126,12 +127,11 @@ class Simulation:
             self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
             self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
             renderer = mujoco.Renderer(self.model, height, width)
+            # Scene flags persist across update_scene: set once per renderer.
             renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
             renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
             self._renderers[key] = renderer
         renderer.update_scene(self.data, camera=camera)
-        renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
-        renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
         return renderer.render()
 
     def close(self) -> None:
@@ -142,8 +142,6 @@ class Simulation:
 
     def robot_pose(self, robot: RobotState) -> tuple[list[float], list[float]]:
         """A robot's position and axis-angle rotation in the world's own frame."""
-        from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
-
         pos = self.from_model @ self.data.xpos[robot.body]
         mat = self.from_model @ self.data.xmat[robot.body].reshape(3, 3) @ self.to_model
         return [float(c) for c in pos], [float(c) for c in quat_to_axis_angle(mat_to_quat(mat))]

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from . import _session
-from .device import Device, checked
+from ._presence import PresenceDevice
+from .device import checked
 
 
-class Connector(Device):
+class Connector(PresenceDevice):
     """A Connector node; ``lock``/``unlock`` and presence sampling reach the simulator at the next step."""
 
     _C = "wb_connector"
@@ -20,39 +21,10 @@ class Connector(Device):
         state.value = -1
         state.locked = bool(state.field("isLocked", False))
 
-    @checked("enable_presence")
-    def enablePresence(self, sampling_period: int) -> None:
-        """Sample the presence of a compatible connector every ``sampling_period`` ms."""
-        period = int(sampling_period)
-        if period < 0:
-            _session.error(f"Error: {self._C}_enable_presence() called with negative sampling period.")
-            return
-        self._s.period = period
-        if period:
-            self._queue("enablePresence", period)
-        else:
-            self._queue("disablePresence")
-
-    @checked("disable_presence")
-    def disablePresence(self) -> None:
-        """Stop sampling the presence."""
-        self._s.period = 0
-        self._queue("disablePresence")
-
-    @checked("get_presence_sampling_period", 0)
-    def getPresenceSamplingPeriod(self) -> int:
-        """The presence sampling period (ms)."""
-        return self._s.period
-
     @checked("get_presence", -1)
     def getPresence(self) -> int:
         """1 when a compatible connector is in range, 0 when not, -1 before the first sample."""
-        if self._s.period <= 0:
-            _session.error(
-                f"Error: {self._C}_get_presence() called for a disabled device! "
-                f"Please use: {self._C}_enable_presence()."
-            )
-        return int(self._s.value)
+        return self._presence()
 
     @checked("lock")
     def lock(self) -> None:
@@ -73,4 +45,3 @@ class Connector(Device):
 
     locked = property(isLocked, doc="Whether the connector is locked.")
     presence = property(getPresence, doc="The last presence sample.")
-    presence_sampling_period = property(getPresenceSamplingPeriod, doc="The presence sampling period.")
