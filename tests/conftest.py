@@ -2,6 +2,8 @@
 
 from pathlib import Path
 
+import wbtc  # noqa: F401  (picks headless OpenGL before any test module imports MuJoCo)
+
 REPO = Path(__file__).resolve().parent.parent
 SHARED = REPO.parent / "shared"
 CORPUS = SHARED / "corpus"

@@ -110,13 +110,15 @@ def run(
     = None,
     physics_step: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
     no_noise: Annotated[bool, typer.Option("--no-noise", help="Turn sensor noise off.")] = False,
+    record: Annotated[Path | None, typer.Option("--record", help="Write a video of the Viewpoint (.mp4 or .gif).")]
+    = None,
 ) -> None:
     """Simulate a world and run its robots' Python controllers."""
     from wbtc.runtime.launch import launch
 
     code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,
                                  json_output=json_output, trace=trace, keys=keys, physics_step=physics_step,
-                                 noise=not no_noise, warn=_print_diagnostics))
+                                 noise=not no_noise, warn=_print_diagnostics, record=record))
     raise typer.Exit(code)
 
 

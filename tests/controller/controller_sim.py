@@ -104,6 +104,12 @@ class FakeSim:
         send_frame(self.sock, reply)
         return duration, commands
 
+    def answer(self, op: str, *args: Any, result: Any = None, error: str | None = None, tag: int = -1) -> None:
+        """Receive one call frame, check that it is exactly ``("call", tag, op, args)``, and answer it."""
+        frame = self.recv()
+        assert frame == ("call", tag, op, args), frame
+        send_frame(self.sock, {"error": error} if error is not None else {"result": result})
+
     def finish(self) -> tuple[int, str, str]:
         """Close the connection and wait for the controller: (exit code, stdout, stderr)."""
         self.sock.close()

@@ -79,6 +79,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         elif kind not in _SCENE_ONLY:
             builder.walk(node, spec.worldbody, root, None, False)
     world.apply_friction(info_node, ctx)
+    world.set_ambient(_first(scene, "Background"), ctx)
     if options.strict and ctx.warnings:
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     model = _compile(spec)

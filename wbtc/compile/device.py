@@ -1,7 +1,8 @@
 """Robots and devices: DeviceTable entries and the MuJoCo sites, cameras and actuators they need.
 
-A Solid device (DistanceSensor, Camera, InertialUnit, LED, ...) gets a site at its origin; a
-Camera, RangeFinder or Lidar also gets a MuJoCo camera looking along the device's +x axis; a
+A Solid device (DistanceSensor, Camera, InertialUnit, LED, ...) gets a site at its origin (a
+pre-R2022a Lidar's site is turned to the R2022a frame, +x ahead, the runtime casts its rays in); a
+Camera or RangeFinder also gets a MuJoCo camera looking along the device's +x axis; a
 RotationalMotor or LinearMotor gets a velocity actuator on its joint whose force is limited to
 maxTorque/maxForce — the runtime turns Webots' motor model (position P controller, velocity and
 acceleration limits) into that actuator's velocity target every basic time step.
@@ -37,10 +38,15 @@ CAMERA_DEVICES = frozenset({"Camera", "RangeFinder"})
 SITE_GROUP = 5
 _UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare", "motionBlur",
                          "projection", "bloomThreshold"})
+#: The runtime casts a Lidar's `projection` itself; its `rotatingHead` solid does not turn.
+_LIDAR_UNHONOURED = (_UNHONOURED - {"projection"}) | {"rotatingHead"}
 
 # Webots cameras (R2022a+) look along +x with +z up; MuJoCo cameras look along -z with +y up.
 # The columns are MuJoCo's camera axes written in the device frame: x_cam = -y, y_cam = +z, z_cam = -x.
 CAMERA_QUAT = mat_to_quat(np.array([[0.0, 0.0, -1.0], [-1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]))
+# Pre-R2022a lidars looked along -z with +y up and +x to the right; their site carries the R2022a
+# frame (+x ahead, +y left, +z up) the runtime casts in. Columns: x_site = -z, y_site = -x, z_site = +y.
+LEGACY_LIDAR_QUAT = mat_to_quat(np.array([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]]))
 
 
 def add_robot(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> RobotEntry:
@@ -64,7 +70,7 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     kind = node.base_type
     if kind not in SOLID_DEVICES:
         return None
-    ctx.unhonoured(node, _UNHONOURED)
+    ctx.unhonoured(node, _LIDAR_UNHONOURED if kind == "Lidar" else _UNHONOURED)
     name = str(node.get("name"))
     if robot.device(name) is not None:
         ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
@@ -74,6 +80,8 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.size = [0.002, 0, 0]
     site.group = SITE_GROUP
     site.info = info(node)
+    if kind == "Lidar" and ctx.legacy_axes(node):
+        site.quat = LEGACY_LIDAR_QUAT
     entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, site=site.name)
     if kind in CAMERA_DEVICES:
         entry.camera = _camera(node, body, ctx)

@@ -1,8 +1,11 @@
 """DirectionalLight, PointLight and SpotLight to MuJoCo lights.
 
-Webots' light colour × intensity becomes MuJoCo's diffuse colour, `ambientIntensity` its ambient,
+Webots' light colour × intensity becomes MuJoCo's diffuse colour; `ambientIntensity` becomes its
+ambient as a default Material sees it (× the Material's ambientIntensity, 0.2; PBRAppearances
+ignore light ambient in Webots and take the Background's instead, see `world.set_ambient`);
 `attenuation` carries over as is (both use 1 / (a0 + a1 d + a2 d²)), a spot's `cutOffAngle`
-(radians, half angle) becomes MuJoCo's cutoff (degrees) and `beamWidth` a rough exponent.
+(radians, half angle) becomes MuJoCo's cutoff (degrees) and `beamWidth` a rough exponent. A
+PointLight is a MuJoCo spot with a 180° cut-off (MuJoCo's OpenGL renderer draws no point lights).
 
 Not honoured yet: `radius` (MuJoCo lights reach everywhere), `castLensFlares`. MuJoCo's OpenGL
 renderer uses at most eight lights.
@@ -20,6 +23,8 @@ from wbtc.compile.frames import Frame
 from wbtc.scene.model import Node
 
 _UNHONOURED = frozenset({"radius", "castLensFlares"})
+#: Material.ambientIntensity's default: Webots' Phong ambient is light ambient × this × diffuseColor.
+MATERIAL_AMBIENT = 0.2
 
 
 def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContext) -> mujoco.MjsLight | None:
@@ -35,7 +40,7 @@ def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContex
     intensity = float(node.get("intensity"))
     light.diffuse = np.clip(colour * intensity, 0.0, 1.0)
     light.specular = np.clip(colour * intensity * 0.3, 0.0, 1.0)
-    light.ambient = np.clip(colour * float(node.get("ambientIntensity")), 0.0, 1.0)
+    light.ambient = np.clip(colour * float(node.get("ambientIntensity")) * MATERIAL_AMBIENT, 0.0, 1.0)
     light.castshadow = bool(node.get("castShadows"))
     if kind == "DirectionalLight":
         light.type = mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
@@ -46,7 +51,10 @@ def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContex
     light.pos = frame.apply(np.asarray(node.get("location"), dtype=float))
     light.attenuation = np.asarray(node.get("attenuation"), dtype=float)
     if kind == "PointLight":
-        light.type = mujoco.mjtLightType.mjLIGHT_POINT
+        # MuJoCo's OpenGL renderer draws nothing for its point lights: a spot lighting every way
+        # (180° cut-off, no fall-off) is the same light.
+        light.type = mujoco.mjtLightType.mjLIGHT_SPOT
+        light.cutoff, light.exponent = 180.0, 0.0
         return light
     light.type = mujoco.mjtLightType.mjLIGHT_SPOT
     light.dir = _unit(frame.rotate(np.asarray(node.get("direction"), dtype=float)))

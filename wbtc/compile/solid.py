@@ -124,6 +124,7 @@ class BodyBuilder:
         body.name = ctx.unique("body", _body_name(node, robot))
         body.pos, body.quat = pose.pos, pose.quat
         body.info = info(node)
+        ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy()))
         if node.def_name and node.def_name not in ctx.table.bodies:
             ctx.table.bodies[node.def_name] = body.name
         physics = node.get("physics")

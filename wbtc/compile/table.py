@@ -89,6 +89,9 @@ class DeviceTable:
         random_seed: WorldInfo.randomSeed.
         bodies: MuJoCo body name of each named Solid (by DEF name), for the supervisor.
         viewpoint: the world's Viewpoint fields (plain values), if any.
+        solids: for every Solid node (by `id(node)`), its MuJoCo body and the frame (position, quaternion)
+            its translation/rotation are relative to, in the parent body: what the supervisor needs to read
+            and write a Solid's pose.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -99,6 +102,7 @@ class DeviceTable:
     random_seed: int = 0
     bodies: dict[str, str] = field(default_factory=dict)
     viewpoint: dict[str, Any] | None = None
+    solids: dict[int, tuple[str, np.ndarray, np.ndarray]] = field(default_factory=dict)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

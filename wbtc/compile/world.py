@@ -8,6 +8,13 @@
   by their priority, else by maximum: geoms whose material has a ("default", M) ContactProperties
   get μ and a higher priority, so they win against default geoms; a ("default", "default") entry
   sets everyone's μ. A pair of two non-default materials is approximated by the first rule.
+- Ambient light: Webots has no headlight. Its PBRAppearances are lit by the Background (image-based
+  light; a plain sky colour without cube maps) and its Materials by the lights' ambientIntensity.
+  MuJoCo has one global ambient (the headlight's, here without diffuse or specular), set to the
+  larger of the two: the sky's mean level c (colour × luminosity; neutral, so greys stay grey)
+  through Webots' exposure tone curve and display gamma, (1 − e^−c)^(1/2.2), less what the lights'
+  own ambient already gives. So Materials get the sky's light too, which Webots does not give them.
+  A world with neither lights nor a Background keeps MuJoCo's headlight so that it is not black.
 - NUE worlds (x north, y up, z east) are turned into ENU once, at the root: every top-level node
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
 
@@ -97,6 +104,23 @@ def add_background(node: Node, ctx: CompileContext) -> None:
     texture.rgb1, texture.rgb2 = colour, colour * 0.8
     texture.width = texture.height = 64
     ctx.spec.visual.rgba.haze = [*colour, 1.0]
+
+
+def set_ambient(background: Node | None, ctx: CompileContext) -> None:
+    """The global ambient light (MuJoCo's headlight) standing for Webots' Background lighting; see the docstring."""
+    headlight, lights = ctx.spec.visual.headlight, list(ctx.spec.lights)
+    if background is None and not lights:
+        return
+    sky = background.get("skyColor") if background is not None else None
+    if sky is not None and len(sky) > 0:
+        level = max(float(background.get("luminosity")), 0.0) * float(np.mean(np.clip(sky[0], 0.0, None)))
+        image_light = np.full(3, (1.0 - math.exp(-level)) ** (1 / 2.2))
+    else:
+        image_light = np.zeros(3)
+    own = np.sum([np.asarray(light.ambient, dtype=float) for light in lights], axis=0) if lights else np.zeros(3)
+    headlight.ambient = np.clip(image_light - own, 0.0, 1.0)
+    headlight.diffuse = [0.0, 0.0, 0.0]
+    headlight.specular = [0.0, 0.0, 0.0]
 
 
 def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:

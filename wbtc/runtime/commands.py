@@ -8,6 +8,7 @@ previous reply, the keyboard's keys and the time.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import Any
 
 from wbtc.runtime.devices import Receiver
@@ -36,13 +37,17 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
     }
 
 
-def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple]) -> None:
-    """Apply one step's buffered commands."""
+def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
+                   supervisor: Callable[[str, tuple], None] | None = None) -> None:
+    """Apply one step's buffered commands; a supervisor's world writes go to `supervisor` (applied later)."""
     now = sim.time_ms
     for command in commands:
         tag, op, args = command[0], command[1], tuple(command[2:])
         if tag == -1:
-            _robot_command(robot, op, args, now)
+            if op in _ROBOT_OPS or supervisor is None:
+                _robot_command(robot, op, args, now)
+            else:
+                supervisor(op, args)
         elif tag in robot.motors:
             robot.motors[tag].apply(op, args)
         elif tag in robot.sensors:
@@ -53,6 +58,8 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple]) ->
                 sensor.enable(0, now)
             elif op == "setChannel" and isinstance(sensor, Receiver):
                 sensor.channel = int(args[0])
+            else:  # device-specific ops (Lidar point cloud, frequency, ...)
+                sensor.command(op, args)
         elif tag in robot.leds:
             if op == "set":
                 robot.leds[tag].set(int(args[0]), sim.model)
@@ -64,6 +71,10 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple]) ->
                 emitter.channel = int(args[0])
             elif op == "setRange":
                 emitter.range = float(args[0])
+
+
+_ROBOT_OPS = frozenset({"setCustomData", "keyboardEnable", "keyboardDisable", "batterySensorEnable",
+                        "batterySensorDisable"})
 
 
 def _robot_command(robot: RobotState, op: str, args: tuple, now: float) -> None:

@@ -3,8 +3,10 @@
 - LED: `set(v)` lights the LED's shapes: 0 is off (their own colour), 1..n picks `color[v−1]`
   (non-gradual), a gradual LED with one colour scales it by v/255, one with no colour reads v as
   0xRRGGBB.
-- Camera: rendered by MuJoCo offscreen from the device camera (shadows and reflections off) and
-  sent as BGRA bytes, rows from the top.
+- Camera: rendered by MuJoCo offscreen from the device camera (see `offscreen`) at the Camera's
+  `near`, into a BGRA image (rows from the top) in a shared-memory block of its own that the
+  controller reads (`{"shm": name}`); a new block, under a new name, when the size changes; plain
+  bytes in the message when shared memory is unavailable. `Simulation.close` unlinks the blocks.
 - Emitter/Receiver: packets sent during a step reach the receivers on the same channel (−1 on
   either side: every channel) within `range` at the next basic step; radio ignores obstacles,
   infra-red needs a line of sight. Receivers queue them until their next sample.
@@ -16,6 +18,8 @@ fields; Camera noise, recognition and `exposure`; serial emitters (treated as ra
 from __future__ import annotations
 
 import math
+import weakref
+from multiprocessing import shared_memory
 from typing import TYPE_CHECKING, Any
 
 import mujoco
@@ -65,20 +69,78 @@ class Led:
 
 
 class Camera(Sensor):
-    """A Camera rendered by MuJoCo."""
+    """A Camera rendered by MuJoCo into a shared-memory BGRA image."""
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
         super().__init__(entry, sim, skip_bodies)
         self.width = int(entry.fields.get("width", 64))
         self.height = int(entry.fields.get("height", 64))
+        self.near = float(entry.fields.get("near", 0.01))
         self.camera = sim.model.camera(entry.camera).id
+        self.block: shared_memory.SharedMemory | None = None
+        self.pixels: np.ndarray | None = None  # (height, width, 4) BGRA, over the block when there is one
+        self._finalizer: weakref.finalize | None = None
+        self.use_shared = True
+
+    @property
+    def value(self) -> Any:
+        """The last sample (what the next step reply sends)."""
+        return self._value
+
+    @value.setter
+    def value(self, value: Any) -> None:
+        # A sample naming another camera's block (carried over from a camera this one replaces) is
+        # dropped: that block may be gone; the controller keeps its last image until the next sample.
+        if isinstance(value, dict) and value.get("shm") and (self.block is None or value["shm"] != self.block.name):
+            value = {**value, "shm": None, "data": None}
+        self._value = value
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
-        """The image as BGRA bytes."""
-        rgb = sim.render(self.camera, self.width, self.height)
-        bgra = np.empty((self.height, self.width, 4), dtype=np.uint8)
-        bgra[..., 0], bgra[..., 1], bgra[..., 2], bgra[..., 3] = rgb[..., 2], rgb[..., 1], rgb[..., 0], 255
-        return {"shm": None, "data": bgra.tobytes(), "width": self.width, "height": self.height}
+        """Render into the BGRA image; the value names the block (or carries the bytes)."""
+        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near)
+        pixels = self._image()
+        np.copyto(pixels[:, :, :3], rgb[::-1, :, ::-1])  # rows from the top, RGB to BGR
+        if self.block is not None:
+            return {"shm": self.block.name, "data": None, "width": self.width, "height": self.height}
+        return {"shm": None, "data": pixels.tobytes(), "width": self.width, "height": self.height}
+
+    def _image(self) -> np.ndarray:
+        """The BGRA image buffer for the current size (alpha 255), in shared memory when possible."""
+        shape = (self.height, self.width, 4)
+        if self.pixels is not None and self.pixels.shape == shape:
+            return self.pixels
+        self.release()
+        if self.use_shared:
+            try:
+                self.block = shared_memory.SharedMemory(create=True, size=4 * self.width * self.height)
+            except OSError:  # no /dev/shm (or it is full): send the pixels in the messages
+                self.use_shared = False
+        if self.block is not None:
+            self._finalizer = weakref.finalize(self, _unlink, self.block)
+            self.pixels = np.ndarray(shape, dtype=np.uint8, buffer=self.block.buf)
+        else:
+            self.pixels = np.empty(shape, dtype=np.uint8)
+        self.pixels[:, :, 3] = 255
+        return self.pixels
+
+    def release(self) -> None:
+        """Unlink the shared-memory block (a later sample makes a new one)."""
+        self.pixels = None
+        if self._finalizer is not None:
+            self._finalizer()
+            self._finalizer = None
+        self.block = None
+
+
+def _unlink(block: shared_memory.SharedMemory) -> None:
+    try:
+        block.close()
+    except BufferError:  # a view is still exported; the mapping goes with the process
+        pass
+    try:
+        block.unlink()
+    except FileNotFoundError:
+        pass
 
 
 class Receiver(Sensor):

@@ -2,7 +2,7 @@
 
 With a display and without `--headless`, MuJoCo's interactive viewer shows the run in real time
 and keys typed there reach the robots' Keyboard devices. Headless, a progress bar shows on a
-terminal and a summary (or `--json`) ends the run.
+terminal and a summary (or `--json`) ends the run. `--record FILE` films the Viewpoint (`record`).
 """
 
 from __future__ import annotations
@@ -13,12 +13,15 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
+from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
-from wbtc.pipeline import compile_world
+from wbtc.pipeline import load_world
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
+from wbtc.runtime.record import Recorder
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.simulation import Simulation
+from wbtc.runtime.supervisor import SupervisorHub
 
 # GLFW key codes the viewer reports, to Webots' (letters and digits are ASCII in both).
 _GLFW_KEYS = {262: 316, 263: 314, 264: 317, 265: 315, 266: 366, 267: 367, 268: 313, 269: 312, 32: 32}
@@ -26,25 +29,37 @@ _GLFW_KEYS = {262: 316, 263: 314, 264: 317, 265: 315, 266: 366, 267: 367, 268: 3
 
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
            json_output: bool, trace: Path | None, keys: Path | None, physics_step: float, noise: bool,
-           warn: Callable[[list[Diagnostic]], None]) -> int:
-    """Run a world as `wbtc run` does; returns the process exit code."""
+           warn: Callable[[list[Diagnostic]], None], record: Path | None = None) -> int:
+    """Run a world as `wbtc run` does (`record`: the video file to write); returns the process exit code."""
     key_script = read_keys(keys) if keys else []
-    result, expansion = compile_world(world, CompileOptions(max_substep_ms=physics_step))
+    compile_options = CompileOptions(max_substep_ms=physics_step)
+    scene, expansion = load_world(world)
+    result = compile_scene(scene, compile_options)
     unhonoured = [w for w in result.warnings if "not honoured" in w.message]
     warn(expansion.warnings + [w for w in result.warnings if w not in unhonoured])
     if unhonoured:
         print(f"wbtc: {len(unhonoured)} Webots fields of this world are not honoured yet "
               f"(`wbtc compile` lists them)", file=sys.stderr)
     sim = Simulation(result, seed=seed, noise=noise)
+    hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
+    recorder = _recorder(sim, record)
     viewer = None if headless or not _has_display() else _open_viewer(sim)
+    hooks = ([(lambda s: _sync(viewer))] if viewer is not None else []) + ([recorder] if recorder is not None else [])
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
     try:
         options = RunOptions(duration=duration, realtime=realtime or viewer is not None, keys=key_script,
                              trace=TraceWriter(trace_file) if trace_file else None,
-                             on_step=(lambda s: _sync(viewer)) if viewer is not None else None,
+                             on_step=_chain(hooks) if hooks else None,
                              progress=viewer is None and sys.stderr.isatty() and not json_output)
-        outcome = run(sim, world, options)
+        outcome = run(sim, world, options, hub)
+        if hub is not None:
+            hub.close_movie()  # a movieStartRecording never stopped ends with the run
+        if recorder is not None:
+            recorder.close()
+            recorder = None
     finally:
+        if recorder is not None:  # the run failed: no half-written video
+            recorder.abort()
         if trace_file:
             trace_file.close()
         if viewer is not None:
@@ -54,7 +69,25 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
         print(json.dumps(outcome.to_json()))
     else:
         print(summary(outcome))
-    return 0
+    # simulationQuit(status) makes `wbtc run` exit with that status, as Webots does.
+    return outcome.quit_status if outcome.quit_status is not None else 0
+
+
+def _recorder(sim: Simulation, path: Path | None) -> Recorder | None:
+    if path is None:
+        return None
+    try:
+        return Recorder(sim, path)
+    except BaseException:
+        sim.close()
+        raise
+
+
+def _chain(hooks: list[Callable[[Simulation], bool]]) -> Callable[[Simulation], bool]:
+    """One `on_step` calling every hook each step; False (stop) when any says so."""
+    def on_step(sim: Simulation) -> bool:
+        return all([hook(sim) for hook in hooks])
+    return on_step
 
 
 def _has_display() -> bool:

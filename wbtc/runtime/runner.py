@@ -20,6 +20,7 @@ from typing import Any
 from wbtc.runtime import commands
 from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, find_controller
 from wbtc.runtime.simulation import RobotState, Simulation
+from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
 
 DEFAULT_LIMIT_S = 60.0
 #: Largest joint speed (rad/s or m/s) of a world "at rest".
@@ -47,6 +48,7 @@ class Link:
     status: str = "exited"
     exit_code: int | None = None
     wake_ms: float = math.inf
+    generation: int = 0  # the simulation's model generation `robot` belongs to
 
 
 @dataclass
@@ -59,6 +61,7 @@ class RunOutcome:
     end_reason: str
     links: list[Link]
     sim: Simulation
+    quit_status: int | None = None
 
     def to_json(self) -> dict[str, Any]:
         """The `--json` object (keys in the documented order)."""
@@ -76,58 +79,102 @@ class RunOutcome:
 
 def start_controllers(sim: Simulation, world: Path) -> list[Link]:
     """Start every robot's controller and read its first step request."""
-    links = []
+    return [start_link(sim, robot, world) for robot in sim.robots]
+
+
+def start_link(sim: Simulation, robot: RobotState, world: Path, hub: SupervisorHub | None = None) -> Link:
+    """Start one robot's controller (if it has one) and read its first step request."""
     project = str(world.resolve().parent.parent)
-    for robot in sim.robots:
-        name = robot.entry.controller
-        link = Link(robot, None)
-        if name == "<extern>":
-            link.process = ControllerProcess.extern(robot.entry.name)
-        elif name not in NO_CONTROLLER:
-            script = find_controller(world, name)
-            if script is None:
-                print(f"WARNING: {robot.entry.name}: the controller \"{name}\" was not found (looked for "
-                      f"controllers/{name}/{name}.py and {name}.py near the world); the robot stays idle.",
-                      file=sys.stderr)
-            else:
-                link.process = ControllerProcess.start(robot.entry.name, script, robot.entry.controller_args)
-        if link.process is not None:
-            link.status = "running"
-            link.process.send(commands.init_message(sim, robot, str(world.resolve()), project))
-            _receive(sim, link)
-        links.append(link)
-    return links
+    name = robot.entry.controller
+    link = Link(robot, None)
+    if name == "<extern>":
+        link.process = ControllerProcess.extern(robot.entry.name)
+    elif name not in NO_CONTROLLER:
+        script = find_controller(world, name)
+        if script is None:
+            print(f"WARNING: {robot.entry.name}: the controller \"{name}\" was not found (looked for "
+                  f"controllers/{name}/{name}.py and {name}.py near the world); the robot stays idle.",
+                  file=sys.stderr)
+        else:
+            link.process = ControllerProcess.start(robot.entry.name, script, robot.entry.controller_args)
+    if link.process is not None:
+        link.status = "running"
+        link.process.send(commands.init_message(sim, robot, str(world.resolve()), project))
+        _receive(sim, link, hub)
+    return link
 
 
-def _receive(sim: Simulation, link: Link) -> None:
+def _receive(sim: Simulation, link: Link, hub: SupervisorHub | None = None) -> None:
     """Wait for the controller's next request and apply its commands."""
     assert link.process is not None
-    message = link.process.receive()
-    if message is None:
-        link.exit_code = link.process.finish(timeout=5.0)
-        link.status = "exited" if link.exit_code == 0 else "crashed"
-        link.wake_ms = math.inf
+    while True:
+        message = link.process.receive()
+        if message is None:
+            link.exit_code = link.process.finish(timeout=5.0)
+            link.status = "exited" if link.exit_code == 0 else "crashed"
+            link.wake_ms = math.inf
+            return
+        if hub is not None:
+            _catch_up(sim, link)
+        if message[0] == "step":
+            break
+        link.process.send(_answer(sim, link, message, hub))  # a synchronous call; the controller then goes on
+    duration, batch = int(message[1]), message[2]
+    _apply(sim, link, batch, hub)
+    step = sim.step_ms
+    # step(n) runs n ms, rounded up to whole basic time steps (step(0) answers at once).
+    link.wake_ms = sim.time_ms + math.ceil(max(duration, 0) / step - 1e-9) * step
+
+
+def _apply(sim: Simulation, link: Link, batch: list[tuple], hub: SupervisorHub | None) -> None:
+    """Apply a controller's buffered commands; a supervisor's world writes are queued in the hub."""
+    queue = (lambda op, args: hub.queue(link.robot, op, args)) if hub and link.robot.entry.supervisor else None
+    commands.apply_commands(sim, link.robot, batch, queue)
+
+
+def _catch_up(sim: Simulation, link: Link) -> None:
+    """After a recompile, point the link at its robot's new state (if the robot is still there)."""
+    if link.generation == sim.generation:
         return
-    if message[0] == "step":
-        duration, batch = int(message[1]), message[2]
-        commands.apply_commands(sim, link.robot, batch)
-        step = sim.step_ms
-        # step(n) runs n ms, rounded up to whole basic time steps (step(0) answers at once).
-        link.wake_ms = sim.time_ms + math.ceil(max(duration, 0) / step - 1e-9) * step
-    else:  # a synchronous call: answered at once, then the controller goes on
-        link.process.send({"error": f"{message[2]!r} is not supported by wbtc yet"})
-        _receive(sim, link)
+    for robot in sim.robots:
+        if robot.entry.node is link.robot.entry.node or robot.entry.name == link.robot.entry.name:
+            link.robot = robot
+            break
+    link.generation = sim.generation
 
 
-def run(sim: Simulation, world: Path, options: RunOptions) -> RunOutcome:
+def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | None) -> dict[str, Any]:
+    """The reply to a ("call", tag, op, args) frame."""
+    op, args = str(message[2]), tuple(message[3]) if len(message) > 3 else ()
+    if message[1] != -1:
+        return {"error": f"Error: {op}() is not supported by wbtc yet."}
+    if hub is None or not link.robot.entry.supervisor:
+        return {"error": f"Error: {op}() needs a Robot whose 'supervisor' field is TRUE."}
+    if op == "flush":  # writes Webots applies at once (imports, removals): applied now, no time passes
+        _apply(sim, link, list(args[0]), hub)
+        hub.flush()
+        _catch_up(sim, link)
+        return {"result": None}
+    try:
+        return {"result": hub.call(link.robot, op, args)}
+    except SupervisorError as exc:
+        return {"error": str(exc)}
+
+
+def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | None = None) -> RunOutcome:
     """Run `sim` with its controllers until the end condition; see the module docstring."""
     start = time.perf_counter()
-    links = start_controllers(sim, world)
+    links = [start_link(sim, robot, world, hub) for robot in sim.robots]
     limit_ms = (options.duration if options.duration is not None else DEFAULT_LIMIT_S) * 1000.0
     keys = sorted(options.keys)
     reason = "duration" if options.duration is not None else "time limit (60 s)"
     last_progress = 0.0
     while sim.time_ms + 1e-9 < limit_ms:
+        if hub is not None:
+            links = _flush(sim, world, hub, links)
+            if hub.quit_status is not None:
+                reason = f"simulationQuit({hub.quit_status})"
+                break
         active = [link for link in links if link.status == "running"]
         if options.duration is None and not active and _at_rest(sim):
             reason = "all controllers ended and the world is at rest"
@@ -137,6 +184,8 @@ def run(sim: Simulation, world: Path, options: RunOptions) -> RunOutcome:
             while keys and keys[0][0] * 1000.0 <= sim.time_ms + 1e-9:
                 sim.keys_down.append(keys.pop(0)[1])
             sim.step()
+            if hub is not None:
+                hub.after_step()
             if options.trace:
                 options.trace(sim)
             if options.on_step and not options.on_step(sim):
@@ -156,11 +205,51 @@ def run(sim: Simulation, world: Path, options: RunOptions) -> RunOutcome:
             assert link.process is not None
             link.process.send(commands.reply(sim, link.robot, 0))
         for link in ready:
-            _receive(sim, link)
+            _receive(sim, link, hub)
     _stop(sim, links)
     if options.progress:
         print(file=sys.stderr)
-    return RunOutcome(str(world), sim.time, time.perf_counter() - start, reason, links, sim)
+    outcome = RunOutcome(str(world), sim.time, time.perf_counter() - start, reason, links, sim)
+    outcome.quit_status = hub.quit_status if hub is not None else None
+    return outcome
+
+
+def _flush(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) -> list[Link]:
+    """Apply the supervisors' queued writes; follow robots the world gained, lost or restarted."""
+    hub.flush()
+    result = hub.take_changes()
+    if result.time_shift:
+        for link in links:  # time went back to 0: keep each controller's remaining wait
+            link.wake_ms = max(link.wake_ms - result.time_shift, 0.0)
+    if result.rebuilt or result.reset:
+        links = _follow_robots(sim, world, hub, links)
+    for robot in result.restart:
+        for i, link in enumerate(links):
+            if link.robot.entry.node is robot.entry.node or link.robot.entry.name == robot.entry.name:
+                if link.process is not None and link.status == "running":
+                    link.process.finish(timeout=0.0)
+                links[i] = start_link(sim, link.robot, world, hub)
+    return links
+
+
+def _follow_robots(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) -> list[Link]:
+    by_node = {id(robot.entry.node): robot for robot in sim.robots}
+    by_name = {robot.entry.name: robot for robot in sim.robots}
+    kept, taken = [], set()
+    for link in links:
+        robot = by_node.get(id(link.robot.entry.node)) or by_name.get(link.robot.entry.name)
+        if robot is None or id(robot) in taken:  # the robot was removed: its controller is stopped
+            if link.process is not None and link.status == "running":
+                link.process.send(commands.reply(sim, link.robot, -1))
+                link.exit_code = link.process.finish(timeout=1.0)
+            continue
+        taken.add(id(robot))
+        link.robot, link.generation = robot, sim.generation
+        kept.append(link)
+    for robot in sim.robots:
+        if id(robot) not in taken:
+            kept.append(start_link(sim, robot, world, hub))
+    return kept
 
 
 def _stop(sim: Simulation, links: list[Link]) -> None:

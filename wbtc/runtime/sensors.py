@@ -3,19 +3,23 @@
 Every sensor starts disabled; `enable(p)` makes it sample every p ms, the first value p ms later.
 Values are in the world's own frame (NUE worlds are read back through the table's rotation).
 
-- DistanceSensor: rays (see `rays`), lookup table with its noise column, resolution.
+- DistanceSensor: rays (see `rays`), lookup table with its noise column, resolution; infra-red
+  rays see the surface colour where they land (see `surface`).
 - PositionSensor: the joint position (noise σ, resolution).
 - InertialUnit: the device's orientation quaternion (x, y, z, w) in the world's frame.
 - Accelerometer: specific force in the device frame (+9.81 up at rest); Gyro: angular velocity;
   both through their lookup tables, disabled axes NaN.
 - GPS: position and velocity of the device in the world frame (accuracy σ as Gaussian noise).
 - Compass: the world's north (ENU +y, NUE +x) in the device frame.
-- TouchSensor: bumper 1/0 on contact; force and force-3d from contact forces.
-- LightSensor: irradiance of the world's lights with line of sight, through the lookup table.
+- TouchSensor: bumper 1/0 on contact; force (push along -x) and force-3d from the contact forces
+  on the sensor's body, through the lookup table and resolution.
+- LightSensor: Webots' irradiance formula (direct + ambient, attenuation, spot, colorFilter,
+  optional occlusion by bounding objects), through the lookup table and resolution.
+- Lidar: see `lidar`.
 
 Not honoured yet: InertialUnit/GPS/Compass noise models beyond Gaussian accuracy, Accelerometer
-and Gyro `resolution` per axis, LightSensor `colorFilter` and `occlusion` by transparent objects,
-Altimeter, Radar, Microphone.
+and Gyro `resolution` per axis, LightSensor light intensities above 1 (the compiled MuJoCo lights
+clip them) and occlusion by transparent objects, Altimeter, Radar, Microphone.
 """
 
 from __future__ import annotations
@@ -27,9 +31,11 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.frames import mat_to_quat
+from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.lookup import LookupTable, apply, quantize
 from wbtc.runtime.rays import ray_pattern
+from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -68,6 +74,9 @@ class Sensor:
         """The current reading (subclasses)."""
         raise NotImplementedError  # every concrete sensor overrides this
 
+    def command(self, op: str, args: tuple) -> None:
+        """A device-specific command from the controller (none by default: ignored)."""
+
     def frame(self, sim: Simulation) -> tuple[np.ndarray, np.ndarray]:
         """World position and rotation matrix of the device origin (model frame)."""
         return sim.data.site_xpos[self.site], sim.data.site_xmat[self.site].reshape(3, 3)
@@ -103,8 +112,10 @@ class DistanceSensor(Sensor):
             hit = math.isfinite(dist)
             nearest = min(nearest, dist)
             d = dist if hit else self.range
-            # Infra-red: dark surfaces reflect less and look farther (reflection 0.2 + 0.8 red).
-            reflect = 0.2 + 0.8 * sim.geom_red[geom] if (infra_red and hit) else 1.0
+            # Infra-red: dark surfaces reflect less and look farther (reflection 0.2 + 0.8 red), the red
+            # being the surface's colour where the ray lands (texture included).
+            reflect = 0.2 + 0.8 * sim.surface.red(sim.data, geom, pos + world_dir * dist) if (infra_red and hit) \
+                else 1.0
             num += weight * d
             den += weight * reflect
         distance = (nearest if math.isfinite(nearest) else self.range) if self.kind in ("sonar", "laser") \
@@ -193,12 +204,22 @@ class GPS(Sensor):
 
 
 class TouchSensor(Sensor):
-    """Bumper (1/0), force (magnitude through the table) or force-3d (vector in the device frame)."""
+    """Bumper (1/0 on contact), force (the push along -x) or force-3d (the force in the device frame).
+
+    Webots measures forces in the fixed joint between a sensor that has its own Physics and its
+    parent, i.e. the contact forces on the sensor's body; "force" keeps the part pushing the sensor
+    along its -x axis (x points out of the robot, towards what touches it) and 0 for a pull,
+    "force-3d" gives the force's components in the sensor frame, each through the lookup table.
+    A force sensor without Physics reads the table at 0, as in Webots.
+    """
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
         super().__init__(entry, sim, skip_bodies)
         self.kind = str(entry.fields.get("type", "bumper"))
         self.table = LookupTable(entry.fields.get("lookupTable"))
+        self.resolution = float(entry.fields.get("resolution", -1.0))
+        node = entry.node
+        self.has_physics = node is not None and isinstance(node.get("physics"), Node)
         self._force = np.zeros(6)
 
     def sample(self, sim: Simulation) -> float | list[float]:
@@ -208,52 +229,86 @@ class TouchSensor(Sensor):
         touched = False
         for i in range(data.ncon):
             contact = data.contact[i]
-            bodies = (model.geom_bodyid[contact.geom1], model.geom_bodyid[contact.geom2])
-            if self.body not in bodies:
+            first, second = model.geom_bodyid[contact.geom1], model.geom_bodyid[contact.geom2]
+            if self.body not in (first, second) or first == second:
                 continue
             touched = True
             if self.kind != "bumper":
                 mujoco.mj_contactForce(model, data, i, self._force)
-                frame = contact.frame.reshape(3, 3)
-                total += frame.T @ self._force[:3]
+                # MuJoCo's contact force acts on geom2, along the frame's normal (geom1 -> geom2).
+                force = contact.frame.reshape(3, 3).T @ self._force[:3]
+                total += force if second == self.body else -force
         if self.kind == "bumper":
             return 1.0 if touched else 0.0
+        if not self.has_physics:
+            total[:] = 0.0
         _, mat = self.frame(sim)
+        local = mat.T @ total
         if self.kind == "force":
-            return apply(self.table, float(np.linalg.norm(total)), sim.noise_rng)
-        return [float(c) for c in mat.T @ total]
+            return apply(self.table, max(0.0, -float(local[0])), sim.noise_rng, self.resolution)
+        return [apply(self.table, float(c), sim.noise_rng, self.resolution) for c in local]
 
 
 class LightSensor(Sensor):
-    """Irradiance from the world's lights along the sensor's +x axis, through the lookup table."""
+    """Irradiance from the world's lights, Webots' formula, through the lookup table.
+
+    E = Σ att · (ambientIntensity + intensity · max(0, N·L) · spot) · (colour · colorFilter) / 3 over
+    the lights that are on (N: the sensor's +x axis, L: towards the light; att = 1 / (a0 + a1 d +
+    a2 d²), 1 for directional lights). The light values are read back from the MuJoCo lights
+    (diffuse = colour × intensity, ambient = colour × ambientIntensity × 0.2, see
+    `wbtc.compile.light`), so intensities above 1 are clipped and a spot's beamWidth comes back
+    from its exponent. `occlusion` blocks the direct part with bounding objects in the way (the
+    sensor's own robot excepted).
+    """
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
         super().__init__(entry, sim, skip_bodies)
         self.table = LookupTable(entry.fields.get("lookupTable"))
         self.occlusion = bool(entry.fields.get("occlusion", False))
+        self.filter = np.asarray(entry.fields.get("colorFilter", [1.0, 1.0, 1.0]), dtype=float)
+        self.resolution = float(entry.fields.get("resolution", -1.0))
 
     def sample(self, sim: Simulation) -> float:
-        """Sum of the lights' contributions, Lambert cosine, attenuation."""
+        """The lights' irradiance through the lookup table."""
         pos, mat = self.frame(sim)
         axis = mat[:, 0]
         model = sim.model
-        total = 0.0
+        rgb = np.zeros(3)
         for i in range(model.nlight):
             if not model.light_active[i]:
                 continue
-            diffuse = float(np.mean(model.light_diffuse[i]))
+            spot = 1.0
             if model.light_type[i] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL:
-                to_light, att = -sim.data.light_xdir[i], 1.0
+                to_light, dist, att = -sim.data.light_xdir[i], 1000.0, 1.0  # Webots puts it 1 km away
             else:
                 delta = sim.data.light_xpos[i] - pos
                 dist = float(np.linalg.norm(delta))
                 to_light = delta / max(dist, 1e-9)
                 a = model.light_attenuation[i]
-                att = 1.0 / max(a[0] + a[1] * dist + a[2] * dist * dist, 1e-9)
+                denominator = a[0] + a[1] * dist + a[2] * dist * dist
+                att = 1.0 / denominator if denominator > 0 else 1.0
+                if model.light_type[i] == mujoco.mjtLightType.mjLIGHT_SPOT:
+                    spot = _spot_factor(model, i, float(np.dot(to_light, -sim.data.light_xdir[i])))
             cos = float(np.dot(axis, to_light))
-            if cos > 0:
-                total += diffuse * att * cos
-        return apply(self.table, total, sim.noise_rng)
+            direct = cos * spot if cos > 0 else 0.0
+            if direct > 0 and self.occlusion:
+                hit, _ = sim.rays.cast(pos, to_light, dist, False, self.skip_bodies)
+                direct = 0.0 if math.isfinite(hit) else direct
+            rgb += att * (model.light_ambient[i] / MATERIAL_AMBIENT + model.light_diffuse[i] * direct)
+        return apply(self.table, float(rgb @ self.filter) / 3.0, sim.noise_rng, self.resolution)
+
+
+def _spot_factor(model: mujoco.MjModel, light: int, cos_alpha: float) -> float:
+    """Webots' spot factor: 1 inside beamWidth, 0 beyond cutOffAngle, linear in between."""
+    alpha = math.acos(max(-1.0, min(1.0, cos_alpha)))
+    cutoff = math.radians(float(model.light_cutoff[light]))
+    # The compiler's exponent is 10 (1 - beamWidth / cutOffAngle) (0 when the beam fills the cone).
+    beam = cutoff * (1.0 - float(model.light_exponent[light]) / 10.0)
+    if alpha > cutoff:
+        return 0.0
+    if alpha <= beam or cutoff <= beam:
+        return 1.0
+    return (alpha - cutoff) / (beam - cutoff)
 
 
 SENSOR_TYPES: dict[str, type[Sensor]] = {

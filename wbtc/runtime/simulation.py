@@ -13,14 +13,16 @@ from dataclasses import dataclass, field
 import mujoco
 import numpy as np
 
-from wbtc.compile import textures
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
+from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
+from wbtc.runtime.offscreen import Offscreen
 from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
+from wbtc.runtime.surface import SurfaceColours
 
 
 @dataclass
@@ -60,10 +62,12 @@ class Simulation:
         self.rng = np.random.default_rng(max(int(seed), 0))
         self.noise_rng = self.rng if noise else None
         self.rays = RayCaster(self.model, self.data)
-        self.geom_red = _geom_red(self.model, result)
+        self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
         self.keys_down: list[int] = []
+        self.generation = 0  # counts model swaps (a supervisor's recompiles)
+        self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
-        self._renderers: dict[tuple[int, int], mujoco.Renderer] = {}
+        self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
         mujoco.mj_forward(self.model, self.data)
         self.robots = [self._robot(entry) for entry in self.table.robots]
 
@@ -87,6 +91,8 @@ class Simulation:
             state.sensors[tag] = Camera(dev, self, state.bodies)
         elif dev.type == "Receiver":
             state.sensors[tag] = Receiver(dev, self, state.bodies)
+        elif dev.type == "Lidar":
+            state.sensors[tag] = Lidar(dev, self, state.bodies)
         elif dev.type in SENSOR_TYPES:
             state.sensors[tag] = SENSOR_TYPES[dev.type](dev, self, state.bodies)
 
@@ -119,26 +125,28 @@ class Simulation:
             robot.last_pos = pos.copy()
         self.keys_down = []
 
-    def render(self, camera: int, width: int, height: int) -> np.ndarray:
-        """An RGB image (rows from the top) from a model camera, without shadows or reflections."""
-        key = (width, height)
+    def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False) -> Offscreen:
+        """The offscreen renderer for one image size and quality (made once, freed by `close`)."""
+        key = (int(width), int(height), antialias, shadows)
         renderer = self._renderers.get(key)
         if renderer is None:
-            self.model.vis.global_.offwidth = max(self.model.vis.global_.offwidth, width)
-            self.model.vis.global_.offheight = max(self.model.vis.global_.offheight, height)
-            renderer = mujoco.Renderer(self.model, height, width)
-            # Scene flags persist across update_scene: set once per renderer.
-            renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
-            renderer.scene.flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
-            self._renderers[key] = renderer
-        renderer.update_scene(self.data, camera=camera)
-        return renderer.render()
+            renderer = self._renderers[key] = Offscreen(self.model, width, height, antialias=antialias,
+                                                        shadows=shadows)
+        return renderer
+
+    def render(self, camera: int, width: int, height: int) -> np.ndarray:
+        """An RGB image (rows from the top) from a model camera (-1: MuJoCo's free camera)."""
+        return np.ascontiguousarray(self.renderer(width, height).draw(self.data, camera)[::-1])
 
     def close(self) -> None:
-        """Free the renderers."""
+        """Free the renderers and the cameras' shared-memory images (each is made again when next needed)."""
         for renderer in self._renderers.values():
             renderer.close()
         self._renderers.clear()
+        for robot in self.robots:
+            for sensor in robot.sensors.values():
+                if isinstance(sensor, Camera):
+                    sensor.release()
 
     def robot_pose(self, robot: RobotState) -> tuple[list[float], list[float]]:
         """A robot's position and axis-angle rotation in the world's own frame."""
@@ -153,19 +161,3 @@ def _descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
             return True
         body = int(model.body_parentid[body])
     return ancestor == 0
-
-
-def _geom_red(model: mujoco.MjModel, result: CompileResult) -> np.ndarray:
-    """The red level each visual geom shows to infra-red sensors (material or texture mean)."""
-    red = np.array(model.geom_rgba[:, 0], dtype=float)
-    for g in range(model.ngeom):
-        mat = int(model.geom_matid[g])
-        if mat < 0:
-            continue
-        red[g] = float(model.mat_rgba[mat, 0])
-        tex = int(model.mat_texid[mat, mujoco.mjtTextureRole.mjTEXROLE_RGB])
-        if tex >= 0:
-            path = result.texture_paths.get(model.texture(tex).name)
-            if path:
-                red[g] *= textures.mean_color(path)[0]
-    return red

@@ -6,6 +6,7 @@ Python objects for one device (``getDevice``, ``Motor.getPositionSensor()``, ``D
 
 from __future__ import annotations
 
+import atexit
 import sys
 import weakref
 from collections.abc import Callable
@@ -71,6 +72,13 @@ class Session:
         self.battery_period = 0
         self.battery_value = 0.0
         self.motions: list[weakref.ref] = []
+        # Supervisor API state (supervisor.py, node.py, field.py)
+        self.nodes: dict[int, Any] = {}  # node id -> the one Node object for it
+        self.fields: dict[int, Any] = {}  # field id -> the one Field object for it
+        self.pending_fields: dict[tuple[int, int], Any] = {}  # (field id, index) -> value set since the last step
+        self.pending_mode: int | None = None  # simulationSetMode() not yet sent
+        self.movie_status = 0  # WB_SUPERVISOR_MOVIE_READY, RECORDING after movieStartRecording()
+        self.epoch = 0  # counts steps and flushes: what the child caches of the world holds within one epoch
 
     # -- devices and commands -------------------------------------------------------------------------------
     def find(self, name: str) -> DeviceState | None:
@@ -111,6 +119,7 @@ class Session:
         if self.battery_value < 0.0:
             self.battery_value = 0.0
         commands, self.commands = self.commands, []
+        self._forget_pending()
         try:
             self.wire.send(("step", duration, commands))
         except OSError:
@@ -137,6 +146,7 @@ class Session:
             self.ended = True
             return -1
         self._absorb(reply)
+        self.epoch += 1
         status = int(reply.get("status", 0))
         if status == -1:
             self.ended = True
@@ -169,6 +179,22 @@ class Session:
             if motion is not None:
                 motion._play_step(duration)
 
+    def cleanup(self) -> None:
+        """At exit, as Webots' ``wb_robot_cleanup``: one last ``step(0)`` so that the last commands apply.
+
+        A controller that sets its motors and ends without stepping again (the Thymio lessons do) still
+        moves its robot in Webots, because the library sends the pending commands when the process exits.
+        """
+        if self.ended:
+            return
+        try:
+            if self.in_step:
+                self.step_end()
+            if self.commands and not self.ended:
+                self.step(0)
+        except Exception:  # the simulator may be gone already; exiting must not fail
+            pass
+
     # -- synchronous calls ----------------------------------------------------------------------------------
     def call(self, tag: int, op: str, *args: Any, function: str = "", default: Any = None) -> Any:
         """Ask the simulator and wait for the answer; prints the simulator's error and returns ``default``."""
@@ -190,6 +216,51 @@ class Session:
             error(str(reply["error"]))
             return default
         return reply.get("result", default)
+
+    # -- Supervisor helpers ---------------------------------------------------------------------------------
+    def check_supervisor(self, function: str) -> bool:
+        """Webots' ``robot_check_supervisor``: False, after its two error lines, when the robot is no supervisor."""
+        if self.supervisor:
+            return True
+        error(f"Error: ignoring illegal call to {function}() in a 'Robot' controller.")
+        error("Error: this function can only be used in a 'Supervisor' controller.")
+        return False
+
+    def flush(self, function: str) -> bool:
+        """Have the simulator apply the buffered commands now (the ``flush`` call of wire.py).
+
+        Webots performs some supervisor operations at once (node removal, MF inserts and removals, node imports);
+        the child queues them and then flushes, so that the next calls see their effect. When the simulator
+        cannot flush (between ``stepBegin`` and ``stepEnd``, or an error answer) the commands stay buffered and
+        leave with the next step. Returns whether they were applied.
+        """
+        if not self.commands:
+            return True
+        if self.in_step:
+            error(
+                f"Warning: {function}(): functions with immediate requests to Webots cannot be implemented "
+                "in-between wb_robot_step_begin() and wb_robot_step_end()!"
+            )
+            return False
+        if self.ended:
+            return False
+        try:
+            self.wire.send(("call", ROBOT_TAG, "flush", (self.commands,)))
+            reply = self.wire.recv()
+        except (OSError, WireClosed):
+            self.ended = True
+            return False
+        if "error" in reply:
+            return False
+        self.commands = []
+        self._forget_pending()
+        return True
+
+    def _forget_pending(self) -> None:
+        """The buffered commands have left: the simulator's answers are current again."""
+        self.pending_fields.clear()
+        self.pending_mode = None
+        self.epoch += 1
 
 
 _current: Session | None = None
@@ -229,4 +300,5 @@ def start() -> Session:
         error(f"wbtc: the simulator closed the connection before describing the robot ({exc}).")
         sys.exit(1)
     _current = Session(wire, init)
+    atexit.register(_current.cleanup)
     return _current

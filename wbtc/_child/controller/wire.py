@@ -63,6 +63,49 @@ Calls (synchronous queries, e.g. for the Supervisor API)
     Calls are refused child-side between ``stepBegin`` and ``stepEnd``, as in Webots. Used so far by
     ``Skin.getBoneOrientation``/``getBonePosition`` (ops of those names, args ``(index, absolute)``).
 
+Supervisor (robots whose ``supervisor`` field is TRUE; every op uses tag -1)
+    A *node ref* is the dict ``{"id": int (Webots unique id, root 0), "def": str, "type": str (getTypeName: the
+    PROTO name for PROTO instances), "base_type": str (getBaseTypeName), "proto": bool, "parent": int (-1 for
+    the root)}``. A *field ref* is ``{"id": int (allocated by the simulator, stable for the run), "name": str,
+    "type": int (Webots WB_SF_*/WB_MF_* code), "count": int (-1 for SF fields)}``. Field values: SFBool bool,
+    SFInt32 int, SFFloat float, SFVec2f/SFVec3f/SFColor/SFRotation lists of 2/3/3/4 floats, SFString str,
+    SFNode node ref or None; MF items likewise, one at a time.
+
+    Calls (answered at once, the world as of the last step):
+    ``("getRoot",)``, ``("getSelf",)`` -> node ref; ``("getFromDef", name, proto_node_id or -1)`` (dotted
+    ``"A.B"`` paths resolved by the simulator), ``("getFromId", id)``, ``("getFromDevice", tag)`` -> node ref or
+    None; ``("node.getField", id, name, base: bool)``, ``("node.getFieldByIndex", id, index, base)`` -> field
+    ref or None; ``("node.getNumberOfFields", id, base)`` -> int (``base`` False: ``getField``, which for a
+    PROTO instance means its interface fields; True: ``getBaseNodeField``/``getProtoField``, the fields of the
+    built-in node the PROTO expands to); ``("node.getPosition", id)`` -> [3];
+    ``("node.getOrientation", id)`` -> [9] row-major; ``("node.getPose", id, from_id or -1)`` -> [16] row-major;
+    ``("node.getCenterOfMass", id)`` -> [3]; ``("node.getVelocity", id)`` -> [6]; ``("node.getContactPoints",
+    id, include_descendants)`` -> list of ``([x, y, z], node_id)``; ``("node.getStaticBalance", id)`` -> bool;
+    ``("node.exportString", id)`` -> str; ``("field.get", field_id, index)`` (index -1 for SF) -> value;
+    ``("field.getCount", field_id)`` -> int; ``("simulationGetMode",)`` -> int.
+
+    Commands (buffered with the step, applied in order before it runs, as Webots applies them):
+    ``("simulationQuit", status)``, ``("simulationReset",)``, ``("simulationResetPhysics",)``,
+    ``("simulationSetMode", mode)``, ``("worldReload",)``, ``("worldSave", filename or None)``,
+    ``("exportImage", abs_path, quality)``, ``("movieStartRecording", abs_path, width, height, codec, quality,
+    acceleration, caption)``, ``("movieStopRecording",)``, ``("animationStartRecording", abs_path)``,
+    ``("animationStopRecording",)``, ``("setLabel", id, text, x, y, size, color_rgb_int, transparency, font)``;
+    ``("node.resetPhysics", id)``, ``("node.restartController", id)``, ``("node.remove", id)``,
+    ``("node.setVelocity", id, [6])``, ``("node.addForce", id, [3], relative)``, ``("node.addForceWithOffset",
+    id, [3], [3], relative)``, ``("node.addTorque", id, [3], relative)``; ``("field.set", field_id, index,
+    value)``, ``("field.insert", field_id, index, value)``, ``("field.remove", field_id, index)``,
+    ``("field.importMFNode", field_id, position, vrml_text)``, ``("field.importSFNode", field_id, vrml_text)``,
+    ``("field.removeSF", field_id)``. After ``simulationQuit`` the next step replies status -1.
+    Until the next step, the child answers a ``get`` of a field it has just set with the value it set.
+
+    Flush (a call; the one exception to "calls carry no commands"): ``("flush", commands)``, ``commands`` being
+    a step frame's list, asks the simulator to apply them now, in order, with no time passing, and to answer
+    None. Webots performs node removal, MF inserts/removals and node imports at once, so the child queues those
+    (``node.remove``, ``field.insert``, ``field.remove``, ``field.importMFNode``, ``field.importSFNode``,
+    ``field.removeSF``) and then flushes every buffered command; later calls then see their effect (e.g.
+    ``getFromDef`` of a DEF just imported, the new ``field.getCount``), and sets already applied are asked anew.
+    An error answer leaves the commands buffered: they go with the next step.
+
 Notes for the simulator side
     * Webots' C library keeps only the last value of each kind of command per step; here every call is sent, in
       order, so applying them in order gives the same final state.

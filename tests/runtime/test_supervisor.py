@@ -1,0 +1,100 @@
+"""The Supervisor API end to end: a referee controller (fixtures/referee.py) in a real `wbtc run`."""
+
+import json
+import re
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from wbtc.cli import app
+
+FIXTURES = Path(__file__).parent / "fixtures"
+
+
+def _world(tmp_path: Path, mode: str, spawn_driver: bool = True) -> Path:
+    text = (FIXTURES / "referee.wbt").read_text(encoding="utf-8")
+    text = text.replace('controller "<none>"', f'controller "referee"\n  controllerArgs [ "{mode}" ]')
+    for name in ("referee.py", "drive.py"):
+        shutil.copy(FIXTURES / name, tmp_path / name)
+    world = tmp_path / f"{mode}.wbt"
+    world.write_text(text, encoding="utf-8")
+    return world
+
+
+def _run(world: Path, *args: str) -> tuple[int, dict, str]:
+    result = CliRunner().invoke(app, ["run", str(world), "--json", "--headless", *args])
+    lines = result.stdout.strip().splitlines()
+    return result.exit_code, json.loads(lines[-1]) if lines and lines[-1].startswith("{") else {}, result.output
+
+
+def test_referee_puts_the_ball_back_with_zero_velocity(tmp_path):
+    code, data, output = _run(_world(tmp_path, "ball"), "--duration", "2")
+    assert code == 0, output
+    backs = re.findall(r"\[referee\] back ([\d.]+) \[(.*?)\] \[(.*?)\]", output)
+    # Thrown at 1.5 m/s, the ball leaves |x| < 0.3 about every 0.2 s: several returns in 2 s.
+    assert len(backs) >= 4, output
+    for _, velocity, position in backs:
+        # Read one step after the reset (writes apply at the step): the ball resting on the floor only
+        # has what that 16 ms step of contact settling gave it, against 1.5 m/s before.
+        assert max(abs(float(v)) for v in velocity.split(",")) < 0.01
+        x, y, _z = (float(v) for v in position.split(","))
+        assert abs(x) < 1e-6 and abs(y) < 1e-6
+
+
+def test_spawned_robot_runs_its_controller_and_leaves_the_rest_untouched(tmp_path):
+    code, spawn, output = _run(_world(tmp_path, "spawn"), "--duration", "4")
+    assert code == 0, output
+    spawned_at = re.search(r"\[referee\] spawned at \[(.*?)\] (\d+)", output)
+    assert spawned_at, output
+    x, y, _ = (float(v) for v in spawned_at.group(1).split(","))
+    # Its controller drove it 3 rad/s x 0.02 m for about 1 s: x grew by about 0.06 m from 2.
+    assert 2.03 < x < 2.09 and abs(y - 2) < 0.01
+    assert re.search(r"\[referee\] after remove None (\d+)", output).group(1) == str(int(spawned_at.group(2)) - 1)
+    assert [r["name"] for r in spawn["robots"]] == ["driver", "referee"]
+    # The same world without the spawn: the distant driver's trajectory is the same.
+    code, plain, output = _run(_world(tmp_path, "none"), "--duration", "4")
+    assert code == 0, output
+    assert spawn["robots"][0]["position"] == pytest.approx(plain["robots"][0]["position"], abs=1e-6)
+
+
+def test_simulation_quit_status_is_the_exit_code(tmp_path):
+    code, data, output = _run(_world(tmp_path, "quit"), "--duration", "5")
+    assert code == 3, output
+    assert data["end_reason"] == "simulationQuit(3)"
+    assert data["sim_time"] == pytest.approx(0.512, abs=0.02)
+
+
+def test_simulation_reset_restores_poses_and_time(tmp_path):
+    code, data, output = _run(_world(tmp_path, "reset"), "--duration", "1.5")
+    assert code == 0, output
+    assert "[referee] moved [2.0, 2.0, 0.05]" in output
+    reset = re.search(r"\[referee\] reset ([\d.]+) \[(.*?)\] \[(.*?)\]", output)
+    assert reset, output
+    assert float(reset.group(1)) == pytest.approx(0.016)
+    assert [float(v) for v in reset.group(2).split(",")] == pytest.approx([1, 1, 0.05], abs=1e-9)
+    assert [float(v) for v in reset.group(3).split(",")][:2] == pytest.approx([-3, -3], abs=2e-3)
+    # Time went back to 0 and the run lasts until the clock reads 1.5 s again; the driver's controller was
+    # restarted, so it drove 1.5 s at 6.28 rad/s on 0.02 m wheels from its start pose.
+    assert data["sim_time"] == pytest.approx(1.5, abs=0.016)
+    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 1.5, abs=0.01)
+
+
+def test_movie_recording_from_a_supervisor(tmp_path):
+    from PIL import Image
+
+    code, _, output = _run(_world(tmp_path, "movie"), "--duration", "2")
+    assert code == 0, output
+    with Image.open(tmp_path / "movie.gif") as gif:
+        corner = np.asarray(gif.convert("RGB"))[:45, :110].reshape(-1, 3).astype(int)
+        total_ms = 0
+        for index in range(gif.n_frames):  # Pillow merges identical frames into one longer frame
+            gif.seek(index)
+            total_ms += gif.info["duration"]
+    # About one simulated second (0.512 s to 1.504 s) at 10 frames per second, played in real time.
+    assert 900 <= total_ms <= 1100
+    # The red label "referee" is drawn in the top-left corner (nothing red there in the scene itself).
+    red = (corner[:, 0] > 150) & (corner[:, 1] < 90) & (corner[:, 2] < 90)
+    assert red.sum() >= 20

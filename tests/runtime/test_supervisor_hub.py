@@ -1,0 +1,133 @@
+"""The simulator side of the Supervisor API, driven directly (no controller process)."""
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wbtc.compile.compiler import compile_scene
+from wbtc.pipeline import load_world
+from wbtc.runtime.scene_tree import TYPE_CODES
+from wbtc.runtime.simulation import Simulation
+from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
+
+FIXTURES = Path(__file__).parent / "fixtures"
+
+
+@pytest.fixture
+def hub():
+    world = FIXTURES / "referee.wbt"
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    referee = next(r for r in sim.robots if r.entry.name == "referee")
+    yield SupervisorHub(sim, scene, world), referee
+    sim.close()
+
+
+def _field(hub, robot, def_name, name):
+    node = hub.call(robot, "getFromDef", (def_name, -1))
+    return node, hub.call(robot, "node.getField", (node["id"], name, False))
+
+
+def test_nodes_have_webots_ids_types_and_parents(hub):
+    hub, referee = hub
+    assert hub.call(referee, "getRoot", ()) == {"id": 0, "def": "", "type": "Group", "base_type": "Group",
+                                                "proto": False, "parent": -1}
+    driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
+    assert (driver["type"], driver["base_type"], driver["proto"], driver["parent"]) == ("E-puck", "Robot", True, 0)
+    arm = hub.call(referee, "getFromDef", ("BOX.ARM", -1))
+    box = hub.call(referee, "getFromDef", ("BOX", -1))
+    assert (arm["type"], arm["parent"]) == ("Pose", box["id"])
+    assert hub.call(referee, "getFromDef", ("NOPE", -1)) is None
+    assert hub.call(referee, "getFromId", (box["id"],)) == box
+    assert hub.call(referee, "getSelf", ())["def"] == "REFEREE"
+
+
+def test_translation_reads_live_and_writes_move_the_body(hub):
+    hub, referee = hub
+    box, translation = _field(hub, referee, "BOX", "translation")
+    assert translation["type"] == TYPE_CODES["SFVec3f"] == 0x05 and translation["count"] == -1
+    assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([1, 1, 0.05], abs=1e-12)
+    hub.queue(referee, "field.set", (translation["id"], -1, [0.5, -0.25, 0.05]))
+    assert not hub.flush().rebuilt
+    assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([0.5, -0.25, 0.05], abs=1e-12)
+    assert hub.call(referee, "node.getPosition", (box["id"],)) == pytest.approx([0.5, -0.25, 0.05], abs=1e-12)
+    # The Pose child moves with it: 0.1 above the box.
+    arm = hub.call(referee, "getFromDef", ("BOX.ARM", -1))
+    assert hub.call(referee, "node.getPosition", (arm["id"],)) == pytest.approx([0.5, -0.25, 0.15], abs=1e-12)
+
+
+def test_reset_physics_stops_a_thrown_ball(hub):
+    hub, referee = hub
+    sim = hub.sim
+    ball, _ = _field(hub, referee, "BALL", "translation")
+    hub.queue(referee, "node.setVelocity", (ball["id"], [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]))
+    hub.flush()
+    for _ in range(10):
+        sim.step()
+    assert hub.call(referee, "node.getVelocity", (ball["id"],))[0] > 0.5
+    hub.queue(referee, "node.resetPhysics", (ball["id"],))
+    hub.flush()
+    assert hub.call(referee, "node.getVelocity", (ball["id"],)) == pytest.approx([0.0] * 6, abs=1e-12)
+
+
+def test_import_and_remove_a_robot_recompiles_and_keeps_the_rest(hub):
+    hub, referee = hub
+    sim = hub.sim
+    for _ in range(20):
+        sim.step()
+    ball_before = sim.data.xpos[sim.model.body(sim.table.solids[id(hub.tree.from_def("BALL"))][0]).id].copy()
+    root = hub.call(referee, "getRoot", ())
+    children = hub.call(referee, "node.getField", (root["id"], "children", False))
+    count = children["count"]
+    hub.queue(referee, "field.importMFNode", (children["id"], -1, 'DEF NEW E-puck { translation 2 2 0 name "new" }'))
+    assert hub.flush().rebuilt
+    assert [r.entry.name for r in sim.robots] == ["driver", "referee", "new"]
+    assert hub.call(referee, "field.getCount", (children["id"],)) == count + 1
+    new = hub.call(referee, "getFromDef", ("NEW", -1))
+    assert new["type"] == "E-puck"
+    assert hub.call(referee, "node.getPosition", (new["id"],))[:2] == pytest.approx([2, 2], abs=1e-9)
+    ball_after = sim.data.xpos[sim.model.body(sim.table.solids[id(hub.tree.from_def("BALL"))][0]).id]
+    np.testing.assert_allclose(ball_after, ball_before, atol=1e-12)
+    hub.queue(referee, "node.remove", (new["id"],))
+    assert hub.flush().rebuilt
+    assert [r.entry.name for r in sim.robots] == ["driver", "referee"]
+    assert hub.call(referee, "getFromDef", ("NEW", -1)) is None
+
+
+def test_proto_field_change_reexpands_the_instance(hub):
+    hub, referee = hub
+    driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
+    name = hub.call(referee, "node.getField", (driver["id"], "name", False))
+    assert hub.call(referee, "field.get", (name["id"], -1)) == "driver"
+    hub.queue(referee, "field.set", (name["id"], -1, "renamed"))
+    assert hub.flush().rebuilt
+    assert [r.entry.name for r in hub.sim.robots] == ["renamed", "referee"]
+    assert hub.call(referee, "getFromDef", ("DRIVER", -1))["id"] == driver["id"]
+
+
+def test_labels_quit_and_errors(hub):
+    hub, referee = hub
+    hub.queue(referee, "setLabel", (1, "Frame: 3th", 0.8, 0.1, 0.1, 0xFF0000, 0.2, "Arial"))
+    hub.queue(referee, "simulationQuit", (3,))
+    hub.flush()
+    assert hub.sim.labels == {1: ("Frame: 3th", 0.8, 0.1, 0.1, 0xFF0000, 0.2, "Arial")}
+    assert hub.quit_status == 3
+    with pytest.raises(SupervisorError, match="does not exist"):
+        hub.call(referee, "node.getPosition", (9999,))
+
+
+def test_simulation_reset_restores_the_initial_state(hub):
+    hub, referee = hub
+    sim = hub.sim
+    box, translation = _field(hub, referee, "BOX", "translation")
+    hub.queue(referee, "field.set", (translation["id"], -1, [3.0, 3.0, 0.05]))
+    hub.flush()
+    for _ in range(30):
+        sim.step()
+    hub.queue(referee, "simulationReset", ())
+    assert hub.flush().reset
+    assert sim.time_ms == 0.0
+    assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([1, 1, 0.05], abs=1e-12)
+    driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
+    assert hub.call(referee, "node.getPosition", (driver["id"],))[:2] == pytest.approx([-3, -3], abs=1e-9)

@@ -1,0 +1,642 @@
+"""``Field``: one field of a scene-tree node, read and written through the Supervisor API.
+
+Reads ask the simulator (``field.get``); writes are buffered and leave with the next step, and until then a read
+of what was just written answers the written value, as Webots' C library does. Inserting, removing and importing
+are immediate in Webots: they are queued and then flushed (see ``_session.Session.flush``).
+
+The argument checks follow Webots: the SF setters go through the ``value`` property, which accepts only the exact
+Python type (``bool``, ``int``, ``float``, ``str``, or a ``list`` of the right length) and otherwise prints
+``Error: new field value has wrong type or length.``; the C library's checks (field type, index bounds, NaN and
+FLT_MAX, rotation axis, colour range, read-only PROTO internal fields) print its messages. As in Webots' Python
+package, ``getSFFloat()`` and its siblings return the field's value whatever its SF type.
+"""
+
+from __future__ import annotations
+
+import math
+import operator
+from typing import TYPE_CHECKING, Any
+
+from . import _session
+
+if TYPE_CHECKING:
+    from .node import Node
+
+ROBOT_TAG = _session.ROBOT_TAG
+NAN = _session.NAN
+FLT_MAX = 3.4028234663852886e38
+
+SF_BOOL = 0x01
+SF_INT32 = 0x02
+SF_FLOAT = 0x03
+SF_VEC2F = 0x04
+SF_VEC3F = 0x05
+SF_ROTATION = 0x06
+SF_COLOR = 0x07
+SF_STRING = 0x08
+SF_NODE = 0x09
+MF = 0x10
+MF_BOOL = 0x11
+MF_INT32 = 0x12
+MF_FLOAT = 0x13
+MF_VEC2F = 0x14
+MF_VEC3F = 0x15
+MF_ROTATION = 0x16
+MF_COLOR = 0x17
+MF_STRING = 0x18
+MF_NODE = 0x19
+
+TYPE_NAMES: dict[int, str] = {
+    SF_BOOL: "SFBool", SF_INT32: "SFInt32", SF_FLOAT: "SFFloat", SF_VEC2F: "SFVec2f", SF_VEC3F: "SFVec3f",
+    SF_ROTATION: "SFRotation", SF_COLOR: "SFColor", SF_STRING: "SFString", SF_NODE: "SFNode",
+    MF_BOOL: "MFBool", MF_INT32: "MFInt32", MF_FLOAT: "MFFloat", MF_VEC2F: "MFVec2f", MF_VEC3F: "MFVec3f",
+    MF_ROTATION: "MFRotation", MF_COLOR: "MFColor", MF_STRING: "MFString", MF_NODE: "MFNode",
+}
+
+#: Vector sizes of the float-vector types.
+_SIZES = {SF_VEC2F: 2, SF_VEC3F: 3, SF_ROTATION: 4, SF_COLOR: 3, MF_VEC2F: 2, MF_VEC3F: 3, MF_ROTATION: 4, MF_COLOR: 3}
+
+_error = _session.error
+
+
+# -- value checks shared with node.py -----------------------------------------------------------------------------
+def check_float(function: str, value: float) -> bool:
+    """Webots' ``check_float``: NaN and values beyond FLT_MAX are refused with its message."""
+    if math.isnan(value):
+        _error(f"Error: {function}() called with a NaN value.")
+        return False
+    if value > FLT_MAX:
+        _error(f"Error: {function}() called with a value greater than FLX_MAX: {value:g} > {FLT_MAX:g}.")
+        return False
+    if value < -FLT_MAX:
+        _error(f"Error: {function}() called with a value smaller than -FLX_MAX): {value:g} < {-FLT_MAX:g}.")
+        return False
+    return True
+
+
+def check_vector(function: str, values: list[float]) -> bool:
+    """Webots' ``check_vector``: every item passes ``check_float``."""
+    return all(check_float(function, v) for v in values)
+
+
+def to_doubles(values: Any, size: int) -> list[float]:
+    """What ``(ctypes.c_double * size)(*values)`` makes of ``values`` in Webots' Python package.
+
+    Missing items are 0.0; too many raise IndexError and non-numbers TypeError, as ctypes does.
+    """
+    items = list(values)
+    if len(items) > size:
+        raise IndexError("invalid index")
+    doubles = []
+    for item in items:
+        if isinstance(item, (str, bytes)) or not isinstance(item, (int, float)):
+            raise TypeError(f"must be real number, not {type(item).__name__}")
+        doubles.append(float(item))
+    return doubles + [0.0] * (size - len(doubles))
+
+
+def to_double(value: Any) -> float:
+    """What ``ctypes.c_double(value)`` accepts: a real number."""
+    if isinstance(value, (str, bytes)) or not isinstance(value, (int, float)):
+        raise TypeError(f"must be real number, not {type(value).__name__}")
+    return float(value)
+
+
+def _to_int(value: Any, position: int) -> int:
+    """A Python int as ctypes passes it to an ``int`` parameter (anything else is refused)."""
+    if not isinstance(value, int):
+        raise TypeError(f"argument {position}: Don't know how to convert parameter {position}")
+    return int(value)
+
+
+def _to_str(value: Any) -> str:
+    """What ``str.encode(value)`` accepts: a str."""
+    if not isinstance(value, str):
+        raise TypeError(f"descriptor 'encode' for 'str' objects doesn't apply to a '{type(value).__name__}' object")
+    return value
+
+
+def _valid_rotation(function: str, values: list[float]) -> bool:
+    if values[0] == 0.0 and values[1] == 0.0 and values[2] == 0.0:
+        _error(f"Error: {function}() called with invalid values for the [x y z] axis.")
+        return False
+    return True
+
+
+def _valid_color(function: str, values: list[float]) -> bool:
+    if not all(0.0 <= v <= 1.0 for v in values):
+        _error(f"Error: {function}() called with invalid RGB values (outside [0,1] range).")
+        return False
+    return True
+
+
+class Field:
+    """A field of a node (or of a PROTO's base node); ``Node.getField()`` gives the one object per field."""
+
+    SF_BOOL = SF_BOOL
+    SF_INT32 = SF_INT32
+    SF_FLOAT = SF_FLOAT
+    SF_VEC2F = SF_VEC2F
+    SF_VEC3F = SF_VEC3F
+    SF_ROTATION = SF_ROTATION
+    SF_COLOR = SF_COLOR
+    SF_STRING = SF_STRING
+    SF_NODE = SF_NODE
+    MF = MF
+    MF_BOOL = MF_BOOL
+    MF_INT32 = MF_INT32
+    MF_FLOAT = MF_FLOAT
+    MF_VEC2F = MF_VEC2F
+    MF_VEC3F = MF_VEC3F
+    MF_ROTATION = MF_ROTATION
+    MF_COLOR = MF_COLOR
+    MF_STRING = MF_STRING
+    MF_NODE = MF_NODE
+
+    def __init__(self, ref: dict, read_only: bool = False) -> None:
+        """Wrap a field ref of the wire protocol; use ``Field._from_ref`` so that each field has one object."""
+        self._id = int(ref["id"])
+        self._name = str(ref.get("name") or "")
+        self.type: int = int(ref.get("type") or 0)
+        self._count = int(ref.get("count", -1))
+        self._count_epoch = _session.require().epoch
+        self._read_only = read_only
+
+    @classmethod
+    def _from_ref(cls, ref: dict | None, read_only: bool = False) -> Field | None:
+        """The Field object for a field ref (the same object each time for one field id), or None."""
+        if not ref:
+            return None
+        session = _session.require()
+        field = session.fields.get(int(ref["id"]))
+        if field is None:
+            field = cls(ref, read_only)
+            session.fields[field._id] = field
+        else:
+            field._read_only = field._read_only or read_only
+            if "count" in ref:
+                field._count = int(ref["count"])
+                field._count_epoch = session.epoch
+        return field
+
+    # -- description ------------------------------------------------------------------------------------------
+    def getName(self) -> str:
+        """The field's name."""
+        return self.name
+
+    def getType(self) -> int:
+        """The field's type, ``Field.SF_BOOL`` ... ``Field.MF_NODE``."""
+        return self.type
+
+    def getTypeName(self) -> str:
+        """The field's type as in VRML: ``"SFVec3f"``, ``"MFNode"``..."""
+        return self.type_name
+
+    def getCount(self) -> int:
+        """The number of items of an MF field; -1 for an SF field."""
+        return self.count
+
+    def getActualField(self) -> Field:
+        """The field a PROTO parameter is linked to; wbtc hands out the field itself."""
+        return self
+
+    def enableSFTracking(self, samplingPeriod: int) -> None:
+        """Webots streams the field's value every period; wbtc always asks afresh, so only the check remains."""
+        if samplingPeriod < 0:
+            _error("Error: wb_supervisor_field_enable_sf_tracking() called with negative sampling period.")
+
+    def disableSFTracking(self) -> None:
+        """Stop the tracking (nothing to stop in wbtc)."""
+
+    @property
+    def name(self) -> str:
+        """The field's name."""
+        return self._name
+
+    @property
+    def type_name(self) -> str:
+        """The field's type name."""
+        return TYPE_NAMES.get(self.type, "")
+
+    @property
+    def count(self) -> int:
+        """The number of items of an MF field; -1 for an SF field."""
+        return self._current_count() if self.type & MF else -1
+
+    # -- plumbing ----------------------------------------------------------------------------------------------
+    def _current_count(self) -> int:
+        session = _session.require()
+        if self._count_epoch != session.epoch:
+            count = session.call(ROBOT_TAG, "field.getCount", self._id, function="wb_supervisor_field_get_count")
+            if count is not None:
+                self._count = int(count)
+                self._count_epoch = session.epoch
+        return self._count
+
+    def _check(
+        self, function: str, expected: int, index: Any = None, check_type: bool = True, importing: bool = False,
+        writing: bool = False,
+    ) -> int | None:
+        """Webots' ``check_field``: the resolved index (-1 for SF) or None after printing the error."""
+        if writing and self._read_only:
+            _error(f"Error: {function}() called on a read-only PROTO internal field.")
+            return None
+        if check_type and self.type != expected:
+            _error(f"Error: {function}() called with wrong field type: {self.type_name}.")
+            return None
+        if not expected & MF:
+            return -1
+        index = operator.index(index)
+        count = self._current_count() if self.type & MF else -1
+        offset = 0 if importing else -1
+        if index < -(count + 1 + offset) or index > count + offset:
+            if count == 0:
+                _error(f"Error: {function}() called on an empty list.")
+            else:
+                _error(
+                    f"Error: {function}() called with an out-of-bound index: {index} (should be between "
+                    f"{-count - 1 - offset} and {count + offset})."
+                )
+            return None
+        return index + count + 1 + offset if index < 0 else index
+
+    def _get(self, function: str, index: int) -> Any:
+        session = _session.require()
+        if not session.check_supervisor(function):
+            return None
+        key = (self._id, index)
+        if key in session.pending_fields:
+            return session.pending_fields[key]
+        return session.call(ROBOT_TAG, "field.get", self._id, index, function=function)
+
+    def _set(self, function: str, index: int, value: Any) -> None:
+        session = _session.require()
+        if not session.check_supervisor(function):
+            return
+        session.queue(ROBOT_TAG, "field.set", self._id, index, value)
+        session.pending_fields[(self._id, index)] = value
+
+    def _immediate(self, function: str, op: str, *args: Any) -> None:
+        """Queue an operation Webots performs at once, then flush it."""
+        session = _session.require()
+        if not session.check_supervisor(function):
+            return
+        session.queue(ROBOT_TAG, op, self._id, *args)
+        session.flush(function)
+
+    def _writable(self, function: str) -> bool:
+        if self._read_only:
+            _error(f"Error: {function}() called on a read-only PROTO internal field.")
+            return False
+        return True
+
+    def _node(self, ref: Any) -> Node | None:
+        from .node import Node
+
+        return Node._from_ref(ref, internal=self._read_only)
+
+    # -- SF values ---------------------------------------------------------------------------------------------
+    @property
+    def value(self) -> Any:
+        """The value of an SF field (None for an MF field); setting it checks the Python type strictly."""
+        kind = self.type
+        if kind == SF_BOOL:
+            result = self._get("wb_supervisor_field_get_sf_bool", -1)
+            return bool(result) if result is not None else False
+        if kind == SF_INT32:
+            result = self._get("wb_supervisor_field_get_sf_int32", -1)
+            return int(result) if result is not None else 0
+        if kind == SF_FLOAT:
+            result = self._get("wb_supervisor_field_get_sf_float", -1)
+            return float(result) if result is not None else 0.0
+        if kind == SF_STRING:
+            result = self._get("wb_supervisor_field_get_sf_string", -1)
+            return str(result) if result is not None else ""
+        if kind in (SF_VEC2F, SF_VEC3F, SF_ROTATION, SF_COLOR):
+            function = "wb_supervisor_field_get_sf_" + TYPE_NAMES[kind][2:].lower()
+            result = self._get(function, -1)
+            size = _SIZES[kind]
+            return [float(v) for v in result[:size]] if result is not None else [NAN] * size
+        if kind == SF_NODE:
+            return self.getSFNode()
+        return None
+
+    @value.setter
+    def value(self, value: Any) -> None:
+        kind = self.type
+        if kind == SF_BOOL and isinstance(value, bool):
+            self._set_sf("wb_supervisor_field_set_sf_bool", value)
+        elif kind == SF_INT32 and isinstance(value, int):
+            self._set_sf("wb_supervisor_field_set_sf_int32", int(value))
+        elif kind == SF_FLOAT and isinstance(value, float):
+            self._set_sf("wb_supervisor_field_set_sf_float", value)
+        elif kind == SF_STRING and isinstance(value, str):
+            self._set_sf("wb_supervisor_field_set_sf_string", value)
+        elif kind in _SIZES and not kind & MF and isinstance(value, list) and len(value) == _SIZES[kind]:
+            doubles = to_doubles(value, _SIZES[kind])
+            self._set_sf("wb_supervisor_field_set_sf_" + TYPE_NAMES[kind][2:].lower(), doubles)
+        else:
+            _error("Error: new field value has wrong type or length.")
+
+    def _set_sf(self, function: str, value: Any) -> None:
+        if not self._writable(function):
+            return
+        if not self._valid_item(function, self.type, value):
+            return
+        self._set(function, -1, value)
+
+    @staticmethod
+    def _valid_item(function: str, kind: int, value: Any) -> bool:
+        """The C library's checks on a value of an SF type or an MF item."""
+        base = kind & ~MF
+        if base == SF_FLOAT:
+            return check_float(function, value)
+        if base in (SF_VEC2F, SF_VEC3F):
+            return check_vector(function, value)
+        if base == SF_ROTATION:
+            return check_vector(function, value) and _valid_rotation(function, value)
+        if base == SF_COLOR:
+            return _valid_color(function, value)
+        return True
+
+    def getSFBool(self) -> bool:
+        """The value of the field (Webots' Python package returns ``value`` whatever the SF type)."""
+        return self.value
+
+    def getSFInt32(self) -> int:
+        """The value of the field."""
+        return self.value
+
+    def getSFFloat(self) -> float:
+        """The value of the field."""
+        return self.value
+
+    def getSFVec2f(self) -> list[float]:
+        """The value of the field."""
+        return self.value
+
+    def getSFVec3f(self) -> list[float]:
+        """The value of the field."""
+        return self.value
+
+    def getSFRotation(self) -> list[float]:
+        """The value of the field (axis x, y, z and angle)."""
+        return self.value
+
+    def getSFColor(self) -> list[float]:
+        """The value of the field (r, g, b)."""
+        return self.value
+
+    def getSFString(self) -> str:
+        """The value of the field."""
+        return self.value
+
+    def getSFNode(self) -> Node | None:
+        """The node of an SFNode field, or None."""
+        function = "wb_supervisor_field_get_sf_node"
+        if self._check(function, SF_NODE) is None:
+            return None
+        return self._node(self._get(function, -1))
+
+    def setSFBool(self, value: bool) -> None:
+        """Set the value (sent with the next step)."""
+        self.value = value
+
+    def setSFInt32(self, value: int) -> None:
+        """Set the value (sent with the next step)."""
+        self.value = value
+
+    def setSFFloat(self, value: float) -> None:
+        """Set the value (sent with the next step); it must be a ``float``."""
+        self.value = value
+
+    def setSFVec2f(self, value: list[float]) -> None:
+        """Set the value, a ``list`` of two numbers (sent with the next step)."""
+        if len(value) == 2:
+            self.value = value
+        else:
+            _error("Error: setSFVec2f(): length of 'value' argument should be 2.")
+
+    def setSFVec3f(self, value: list[float]) -> None:
+        """Set the value, a ``list`` of three numbers (sent with the next step)."""
+        if len(value) == 3:
+            self.value = value
+        else:
+            _error("Error: setSFVec3f(): length of 'value' argument should be 3.")
+
+    def setSFRotation(self, value: list[float]) -> None:
+        """Set the value, a ``list`` [x, y, z, angle] (sent with the next step)."""
+        if len(value) == 4:
+            self.value = value
+        else:
+            _error("Error: setSFRotation(): length of 'value' argument should be 4.")
+
+    def setSFColor(self, value: list[float]) -> None:
+        """Set the value, a ``list`` [r, g, b] in [0, 1] (sent with the next step)."""
+        if len(value) == 3:
+            self.value = value
+        else:
+            _error("Error: setSFColor(): length of 'value' argument should be 3.")
+
+    def setSFString(self, value: str) -> None:
+        """Set the value (sent with the next step)."""
+        self.value = value
+
+    # -- MF items ----------------------------------------------------------------------------------------------
+    def _get_mf(self, suffix: str, kind: int, index: int) -> tuple[bool, Any]:
+        function = f"wb_supervisor_field_get_mf_{suffix}"
+        resolved = self._check(function, kind, index)
+        if resolved is None:
+            return False, None
+        return True, self._get(function, resolved)
+
+    def _get_mf_vector(self, suffix: str, kind: int, index: int) -> list[float]:
+        ok, result = self._get_mf(suffix, kind, index)
+        if not ok:
+            raise ValueError("NULL pointer access")  # what Webots' Python package hits after the C error
+        size = _SIZES[kind]
+        return [float(v) for v in result[:size]] if result is not None else [NAN] * size
+
+    def getMFBool(self, index: int) -> bool:
+        """Item ``index`` (negative: from the end)."""
+        return bool(self._get_mf("bool", MF_BOOL, index)[1])
+
+    def getMFInt32(self, index: int) -> int:
+        """Item ``index`` (negative: from the end)."""
+        result = self._get_mf("int32", MF_INT32, index)[1]
+        return int(result) if result is not None else 0
+
+    def getMFFloat(self, index: int) -> float:
+        """Item ``index`` (negative: from the end)."""
+        result = self._get_mf("float", MF_FLOAT, index)[1]
+        return float(result) if result is not None else 0.0
+
+    def getMFString(self, index: int) -> str:
+        """Item ``index`` (negative: from the end)."""
+        result = self._get_mf("string", MF_STRING, index)[1]
+        return str(result) if result is not None else ""
+
+    def getMFVec2f(self, index: int) -> list[float]:
+        """Item ``index`` (negative: from the end)."""
+        return self._get_mf_vector("vec2f", MF_VEC2F, index)
+
+    def getMFVec3f(self, index: int) -> list[float]:
+        """Item ``index`` (negative: from the end)."""
+        return self._get_mf_vector("vec3f", MF_VEC3F, index)
+
+    def getMFRotation(self, index: int) -> list[float]:
+        """Item ``index`` (negative: from the end)."""
+        return self._get_mf_vector("rotation", MF_ROTATION, index)
+
+    def getMFColor(self, index: int) -> list[float]:
+        """Item ``index`` (negative: from the end)."""
+        return self._get_mf_vector("color", MF_COLOR, index)
+
+    def getMFNode(self, index: int) -> Node | None:
+        """Node ``index`` (negative: from the end), or None."""
+        return self._node(self._get_mf("node", MF_NODE, index)[1])
+
+    def _set_mf(self, suffix: str, kind: int, index: int, value: Any) -> None:
+        function = f"wb_supervisor_field_set_mf_{suffix}"
+        resolved = self._check(function, kind, index, writing=True)
+        if resolved is None or not self._valid_item(function, kind, value):
+            return
+        self._set(function, resolved, value)
+
+    def setMFBool(self, index: int, value: bool) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("bool", MF_BOOL, index, bool(value))
+
+    def setMFInt32(self, index: int, value: int) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("int32", MF_INT32, index, _to_int(value, 3))
+
+    def setMFFloat(self, index: int, value: float) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("float", MF_FLOAT, index, to_double(value))
+
+    def setMFVec2f(self, index: int, value: list[float]) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("vec2f", MF_VEC2F, index, to_doubles(value, 2))
+
+    def setMFVec3f(self, index: int, value: list[float]) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("vec3f", MF_VEC3F, index, to_doubles(value, 3))
+
+    def setMFRotation(self, index: int, value: list[float]) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("rotation", MF_ROTATION, index, to_doubles(value, 4))
+
+    def setMFColor(self, index: int, value: list[float]) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("color", MF_COLOR, index, to_doubles(value, 3))
+
+    def setMFString(self, index: int, value: str) -> None:
+        """Set item ``index`` (sent with the next step)."""
+        self._set_mf("string", MF_STRING, index, _to_str(value))
+
+    def _insert_mf(self, suffix: str, kind: int, index: int, value: Any) -> None:
+        function = f"wb_supervisor_field_insert_mf_{suffix}"
+        resolved = self._check(function, kind, index, importing=True, writing=True)
+        if resolved is None or not self._valid_item(function, kind, value):
+            return
+        self._count += 1
+        self._immediate(function, "field.insert", resolved, value)
+
+    def insertMFBool(self, index: int, value: bool) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("bool", MF_BOOL, index, bool(value))
+
+    def insertMFInt32(self, index: int, value: int) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("int32", MF_INT32, index, _to_int(value, 3))
+
+    def insertMFFloat(self, index: int, value: float) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("float", MF_FLOAT, index, to_double(value))
+
+    def insertMFVec2f(self, index: int, value: list[float]) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("vec2f", MF_VEC2F, index, to_doubles(value, 2))
+
+    def insertMFVec3f(self, index: int, value: list[float]) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("vec3f", MF_VEC3F, index, to_doubles(value, 3))
+
+    def insertMFRotation(self, index: int, value: list[float]) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("rotation", MF_ROTATION, index, to_doubles(value, 4))
+
+    def insertMFColor(self, index: int, value: list[float]) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("color", MF_COLOR, index, to_doubles(value, 3))
+
+    def insertMFString(self, index: int, value: str) -> None:
+        """Insert an item before ``index`` (``count`` or -1: at the end)."""
+        self._insert_mf("string", MF_STRING, index, _to_str(value))
+
+    def removeMF(self, index: int) -> None:
+        """Remove item ``index`` of an MF field (negative: from the end)."""
+        function = "wb_supervisor_field_remove_mf"
+        if self.type & MF and self._current_count() == 0:
+            _error(f"Error: {function}() called for an empty field.")
+            return
+        resolved = self._check(function, MF, index, check_type=False, writing=True)
+        if resolved is None:
+            return
+        self._count -= 1
+        self._immediate(function, "field.remove", resolved)
+
+    # -- nodes -------------------------------------------------------------------------------------------------
+    def importMFNodeFromString(self, position: int, nodeString: str) -> None:
+        """Insert the node described in VRML by ``nodeString`` before ``position`` (-1: at the end)."""
+        function = "wb_supervisor_field_import_mf_node_from_string"
+        if not self._writable(function):
+            return
+        if self.type != MF_NODE:
+            _error(f"Error: {function}() called with a wrong field type: {self.type_name}.")
+            return
+        if not nodeString:
+            _error(f"Error: {function}() called with a NULL or empty 'node_string' argument.")
+            return
+        position = operator.index(position)
+        count = self._current_count()
+        if position < -(count + 1) or position > count:
+            _error(
+                f"Error: {function}() called with an out-of-bound index: {position} (should be between "
+                f"{-(count + 1)} and {count})."
+            )
+            return
+        if position < 0:
+            position = count + position + 1
+        self._count += 1
+        self._immediate(function, "field.importMFNode", position, _to_str(nodeString))
+
+    def importSFNodeFromString(self, nodeString: str) -> None:
+        """Put the node described in VRML by ``nodeString`` into an empty SFNode field."""
+        function = "wb_supervisor_field_import_sf_node_from_string"
+        if not self._writable(function):
+            return
+        if self.type != SF_NODE:
+            _error(f"Error: {function}() called with a wrong field type: {self.type_name}.")
+            return
+        if not nodeString:
+            _error(f"Error: {function}() called with a NULL or empty 'node_string' argument.")
+            return
+        if self._get(function, -1) is not None:
+            _error(f"Error: {function}() called with a non-empty field.")
+            return
+        self._immediate(function, "field.importSFNode", _to_str(nodeString))
+
+    def removeSF(self) -> None:
+        """Remove the node of an SFNode field."""
+        function = "wb_supervisor_field_remove_sf"
+        if self.type == SF_NODE and self._get(function, -1) is None:
+            _error(f"Error: {function}() called for an empty field.")
+            return
+        if self._check(function, SF_NODE, writing=True) is None:
+            return
+        self._immediate(function, "field.removeSF")
+
+    def __repr__(self) -> str:
+        return f"<Field {self._name!r} {self.type_name}>"

@@ -1,0 +1,154 @@
+"""Offscreen images of model cameras with MuJoCo's OpenGL renderer, for Camera devices and recordings.
+
+One `Offscreen` per image size: its own OpenGL context, MuJoCo render context sized to the image
+(no larger framebuffer to clear), scene and options, and a preallocated pixel buffer that
+`draw` fills and returns as is (rows from the bottom, as OpenGL reads them; callers flip while they
+copy). Device cameras render without multisampling, as Webots' `antiAliasing FALSE` cameras do;
+recordings ask for 4× multisampling. Shadows are off unless asked for (on a software renderer a
+shadow map costs more than the image itself).
+
+What is drawn: visual geoms (collision geoms and device sites are in hidden groups), the sky
+(a gradient skybox from Background's colour), lights; no haze, reflections, rangefinder rays or
+other decorations. A camera's `near` distance replaces MuJoCo's model-wide near clipping plane.
+Geoms whose bounding sphere lies outside a model camera's view are left out before drawing (the
+software OpenGL of a headless machine pays per geom drawn, seen or not); the image is the same.
+
+Not honoured yet: Camera `far`, `exposure`, `antiAliasing TRUE` and Webots' tone mapping (MuJoCo's
+colours are linear and clamped); shadows (`castShadows`) in camera images and recordings.
+"""
+
+from __future__ import annotations
+
+import math
+
+import mujoco
+import numpy as np
+
+#: Scene flags for every image: no reflections, haze or post-processing.
+_OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
+
+
+class Offscreen:
+    """Renders model cameras at one image size into a reused buffer."""
+
+    def __init__(self, model: mujoco.MjModel, width: int, height: int, *, antialias: bool = False,
+                 shadows: bool = False) -> None:
+        """Make the OpenGL and MuJoCo contexts.
+
+        Args:
+            model: the compiled model (its visual options are left as they were).
+            width: image width in pixels.
+            height: image height in pixels.
+            antialias: 4× multisampling (recordings), else none (device cameras).
+            shadows: draw the shadows of lights that cast them.
+        """
+        self.model, self.width, self.height = model, int(width), int(height)
+        vis = model.vis
+        saved = (vis.global_.offwidth, vis.global_.offheight, vis.quality.offsamples, vis.quality.shadowsize)
+        vis.global_.offwidth, vis.global_.offheight = self.width, self.height
+        vis.quality.offsamples = 4 if antialias else 0
+        if not shadows:
+            vis.quality.shadowsize = 0  # no shadow map (MuJoCo's default one takes 85 ms to make)
+        try:
+            self.gl = mujoco.GLContext(self.width, self.height)
+            self.gl.make_current()
+            self.context: mujoco.MjrContext | None = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
+        finally:
+            vis.global_.offwidth, vis.global_.offheight, vis.quality.offsamples, vis.quality.shadowsize = saved
+        mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
+        self.scene = mujoco.MjvScene(model, maxgeom=model.ngeom + 64)
+        for flag in _OFF:
+            self.scene.flags[flag] = 0
+        self.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = int(shadows)
+        self.option = mujoco.MjvOption()
+        self.option.flags[mujoco.mjtVisFlag.mjVIS_RANGEFINDER] = 0
+        self.camera = mujoco.MjvCamera()
+        self.rect = mujoco.MjrRect(0, 0, self.width, self.height)
+        self.pixels = np.empty((self.height, self.width, 3), dtype=np.uint8)
+        shown = np.asarray(self.option.geomgroup, dtype=bool)
+        group = np.clip(model.geom_group, 0, len(shown) - 1)
+        # Candidates for culling: shown geoms of finite extent (planes are infinite).
+        self.cullable = np.flatnonzero(shown[group] & (model.geom_rbound > 0)
+                                       & (model.geom_type != mujoco.mjtGeom.mjGEOM_PLANE))
+        self.rbound = model.geom_rbound[self.cullable]
+        self.cull = True
+        self.hidden_group = int(np.flatnonzero(~shown)[-1]) if not shown.all() else -1
+
+    def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
+             pose: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+        """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
+
+        Args:
+            data: the simulation state to draw.
+            camera: model camera id, or -1.
+            near: near clipping distance in metres (None: MuJoCo's).
+            pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
+
+        Returns:
+            The RGB pixels, rows from the **bottom**; overwritten by the next `draw`.
+        """
+        if self.context is None:
+            raise RuntimeError("this offscreen renderer is closed")
+        self.gl.make_current()
+        cam = self.camera
+        if camera < 0:
+            cam.type = mujoco.mjtCamera.mjCAMERA_FREE
+            mujoco.mjv_defaultFreeCamera(self.model, cam)
+        else:
+            cam.type, cam.fixedcamid = mujoco.mjtCamera.mjCAMERA_FIXED, camera
+        saved = culled = None
+        if pose is not None and camera >= 0:
+            saved = data.cam_xpos[camera].copy(), data.cam_xmat[camera].copy()
+            data.cam_xpos[camera], data.cam_xmat[camera] = pose[0], np.asarray(pose[1]).reshape(9)
+        if self.cull and camera >= 0 and self.hidden_group >= 0 and len(self.cullable):
+            culled = self._outside(data, camera, near if near is not None and near > 0 else 0.0)
+        groups = self.model.geom_group
+        kept = groups[culled].copy() if culled is not None else None
+        try:
+            if culled is not None:
+                groups[culled] = self.hidden_group
+            mujoco.mjv_updateScene(self.model, data, self.option, None, cam, mujoco.mjtCatBit.mjCAT_ALL, self.scene)
+        finally:
+            if culled is not None:
+                groups[culled] = kept
+            if saved is not None:
+                data.cam_xpos[camera], data.cam_xmat[camera] = saved
+        if near is not None and near > 0:
+            for glcam in self.scene.camera:
+                scale = near / glcam.frustum_near
+                glcam.frustum_near = near
+                glcam.frustum_bottom *= scale
+                glcam.frustum_top *= scale
+                glcam.frustum_center *= scale
+                glcam.frustum_width *= scale
+        mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
+        mujoco.mjr_render(self.rect, self.scene, self.context)
+        mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
+        return self.pixels
+
+    def _outside(self, data: mujoco.MjData, camera: int, near: float) -> np.ndarray:
+        """The geoms whose bounding spheres are wholly outside the camera's view pyramid."""
+        rel = (data.geom_xpos[self.cullable] - data.cam_xpos[camera]) @ data.cam_xmat[camera].reshape(3, 3)
+        depth = -rel[:, 2]  # MuJoCo cameras look along their -z axis, y up
+        tan_v = math.tan(math.radians(self.model.cam_fovy[camera]) / 2)
+        tan_h = tan_v * self.width / self.height
+        r = self.rbound
+        out = (depth + r < near) | (np.abs(rel[:, 0]) - depth * tan_h > r * math.hypot(1.0, tan_h)) \
+            | (np.abs(rel[:, 1]) - depth * tan_v > r * math.hypot(1.0, tan_v))
+        return self.cullable[out]
+
+    def close(self) -> None:
+        """Free the OpenGL resources (safe to call twice)."""
+        context, self.context = getattr(self, "context", None), None
+        if context is not None:
+            # Free in this renderer's own OpenGL context: another one may be current, and MuJoCo
+            # frees its textures and framebuffers by id in whichever context is.
+            self.gl.make_current()
+            context.free()
+            self.gl.free()
+
+    def __del__(self) -> None:
+        try:
+            self.close()
+        except Exception:  # noqa: BLE001 - at interpreter exit OpenGL may already be gone
+            pass

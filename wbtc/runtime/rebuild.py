@@ -1,0 +1,124 @@
+"""Swap a running simulation onto a recompiled model, keeping the state of everything that stays.
+
+A supervisor that imports or removes nodes, or changes a field that the compiled model cannot
+change in place (a PROTO field, a light's intensity, a shape's colour), makes the world recompile.
+The new model is then given the old state by element name: joint positions and velocities (with
+the solver's warm start), actuator controls, simulated time; robots keep their device states
+(motor targets and PID memory, sensor periods and last values, LED values, radio channels).
+Robots that are new start fresh; robots that are gone are dropped.
+
+Not kept across a recompile: MuJoCo's contact warm start beyond `qacc_warmstart`, and the
+interactive viewer's hold on the old model (a viewer keeps showing the model it opened with).
+"""
+
+from __future__ import annotations
+
+import mujoco
+
+from wbtc.compile.compiler import CompileResult
+from wbtc.runtime.devices import Emitter, Led, Receiver
+from wbtc.runtime.motors import Motor
+from wbtc.runtime.rays import RayCaster
+from wbtc.runtime.sensors import Sensor
+from wbtc.runtime.simulation import RobotState, Simulation
+from wbtc.runtime.surface import SurfaceColours
+
+_MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "available", "torque", "integral",
+                "prev_error", "command")
+_SENSOR_STATE = ("period", "next_due", "value", "fresh")
+
+
+def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -> None:
+    """Make `sim` run `result`'s model with the state of the old one carried over by name."""
+    old_model, old_data, old_robots = sim.model, sim.data, sim.robots
+    model = result.model
+    data = mujoco.MjData(model)
+    if keep_time:
+        _copy_joints(old_model, old_data, model, data)
+        _copy_actuators(old_model, old_data, model, data)
+        data.time = old_data.time
+    sim.close()  # renderers belong to the old model
+    sim.result, sim.model, sim.data, sim.table = result, model, data, result.table
+    sim.generation += 1
+    sim.rays = RayCaster(model, data)
+    sim.surface = SurfaceColours(model)
+    mujoco.mj_forward(model, data)
+    by_node = {id(robot.entry.node): robot for robot in old_robots}
+    sim.robots = []
+    for entry in result.table.robots:
+        state = sim._robot(entry)
+        old = by_node.get(id(entry.node))
+        if old is not None:
+            carry_devices(old, state, sim, keep_time)
+        sim.robots.append(state)
+
+
+def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:
+    """Give a robot's new device objects the state of the old ones (same tags: same devices)."""
+    new.custom_data = old.custom_data
+    new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
+    if keep_motion:
+        new.distance = old.distance
+    for tag, sensor in new.sensors.items():
+        before = old.sensors.get(tag)
+        if isinstance(before, Sensor) and type(before) is type(sensor):
+            _copy(before, sensor, _SENSOR_STATE)
+            if isinstance(sensor, Receiver) and isinstance(before, Receiver):
+                sensor.channel, sensor.incoming = before.channel, before.incoming
+    if keep_motion:
+        for tag, motor in new.motors.items():
+            if isinstance(old.motors.get(tag), Motor):
+                _copy(old.motors[tag], motor, _MOTOR_STATE)
+        for tag, led in new.leds.items():
+            if isinstance(old.leds.get(tag), Led) and old.leds[tag].value:
+                led.set(old.leds[tag].value, sim.model)
+    for tag, emitter in new.emitters.items():
+        before_emitter = old.emitters.get(tag)
+        if isinstance(before_emitter, Emitter):
+            emitter.channel, emitter.range = before_emitter.channel, before_emitter.range
+
+
+def _copy(source: object, target: object, names: tuple[str, ...]) -> None:
+    for name in names:
+        if hasattr(source, name):
+            setattr(target, name, getattr(source, name))
+
+
+def _copy_joints(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujoco.MjModel,
+                 data: mujoco.MjData) -> None:
+    """Joint positions, velocities and warm-start accelerations, matched by joint name."""
+    for j in range(model.njnt):
+        name = model.joint(j).name
+        try:
+            k = old_model.joint(name).id
+        except KeyError:
+            continue
+        if old_model.jnt_type[k] != model.jnt_type[j]:
+            continue
+        nq = _width(model.jnt_type[j], qpos=True)
+        nv = _width(model.jnt_type[j], qpos=False)
+        qa, qb = model.jnt_qposadr[j], old_model.jnt_qposadr[k]
+        va, vb = model.jnt_dofadr[j], old_model.jnt_dofadr[k]
+        data.qpos[qa:qa + nq] = old_data.qpos[qb:qb + nq]
+        data.qvel[va:va + nv] = old_data.qvel[vb:vb + nv]
+        data.qacc_warmstart[va:va + nv] = old_data.qacc_warmstart[vb:vb + nv]
+
+
+def _copy_actuators(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujoco.MjModel,
+                    data: mujoco.MjData) -> None:
+    for a in range(model.nu):
+        try:
+            k = old_model.actuator(model.actuator(a).name).id
+        except KeyError:
+            continue
+        data.ctrl[a] = old_data.ctrl[k]
+        model.actuator_gainprm[a] = old_model.actuator_gainprm[k]
+        model.actuator_biasprm[a] = old_model.actuator_biasprm[k]
+
+
+def _width(joint_type: int, qpos: bool) -> int:
+    if joint_type == mujoco.mjtJoint.mjJNT_FREE:
+        return 7 if qpos else 6
+    if joint_type == mujoco.mjtJoint.mjJNT_BALL:
+        return 4 if qpos else 3
+    return 1

@@ -1,0 +1,167 @@
+"""Scene edits a Supervisor makes: field values, imported and removed nodes, PROTO re-expansion.
+
+Edits change the expanded scene in place; the supervisor then recompiles it. A PROTO instance is
+its expanded root node with `node.proto` holding the interface values: changing one of those
+values expands the PROTO anew from them (`reexpand`) and puts the new root where the old one was,
+under the same node id. Imported VRML text is parsed, typed and expanded like a world's nodes,
+with the world's PROTO resolver.
+
+Not honoured yet: importing into a field of a node hidden inside a PROTO instance; USE of DEF
+names of the world inside imported text.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from wbtc.errors import WbtcError
+from wbtc.proto.expand import Expander, Typed
+from wbtc.proto.model import load_proto
+from wbtc.proto.resolve import Resolver
+from wbtc.runtime.scene_tree import FieldRef, SceneTree, items_of, to_typed
+from wbtc.scene.build import NodeBuilder
+from wbtc.scene.model import Node
+from wbtc.scene.printer import format_node
+from wbtc.vrml.parser import parse_body
+from wbtc.vrml.values import format_value
+
+if TYPE_CHECKING:
+    from wbtc.runtime.simulation import Simulation
+
+
+def set_value(tree: SceneTree, ref: FieldRef, index: int, value: Any) -> None:
+    """`setSF*` (index -1) or `setMF*`: store the typed value."""
+    if ref.type.startswith("MF"):
+        items = items_of(tree.raw(ref))
+        if not -len(items) <= index < len(items):
+            raise WbtcError(f"index {index} out of range for field '{ref.name}'")
+        items[index] = to_typed(ref.type, value)
+        tree.store(ref, items)
+    else:
+        tree.store(ref, to_typed(ref.type, value))
+
+
+def insert_value(tree: SceneTree, ref: FieldRef, index: int, value: Any) -> None:
+    """`insertMF*`: a new item before `index` (the end when index equals the count)."""
+    items = items_of(tree.raw(ref))
+    items.insert(index if index >= 0 else len(items) + index + 1, to_typed(ref.type, value))
+    tree.store(ref, items)
+
+
+def remove_value(tree: SceneTree, ref: FieldRef, index: int) -> None:
+    """`removeMF`: drop one item."""
+    items = items_of(tree.raw(ref))
+    if not -len(items) <= index < len(items):
+        raise WbtcError(f"index {index} out of range for field '{ref.name}'")
+    del items[index]
+    tree.store(ref, items)
+
+
+def store_pose(node: Node, name: str, value: Any) -> None:
+    """Remember a moved Solid's new translation/rotation (recompiles place static bodies from it)."""
+    node.fields[name] = value
+    if node.proto is not None and name in node.proto.values:
+        node.proto.values[name] = value
+
+
+def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Node:
+    """Parse, expand and insert one node written in VRML into an SFNode or MFNode field."""
+    scene = tree.scene
+    items = parse_body("{ " + text + " }", str(scene.path))
+    builder = NodeBuilder(str(scene.path), scene.version)
+    built = builder.build(items)
+    if builder.errors:
+        raise WbtcError(builder.errors[0].message)
+    if not built:
+        raise WbtcError("the text holds no node")
+    expander = Expander(scene)
+    resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
+    node = expander.expand(built[0], resolver, top_level=ref.node is tree.root)
+    if expander.result.errors:
+        raise WbtcError(expander.result.errors[0].message)
+    if node is None:
+        raise WbtcError(f"the PROTO of '{built[0].type_name}' was not found")
+    if ref.type == "SFNode":
+        tree.store(ref, node)
+    else:
+        items = tree.raw(ref)
+        if items is None:
+            items = []
+            tree.store(ref, items)
+        items.insert(position if position >= 0 else len(items) + position + 1, node)
+        if ref.node is not tree.root and ref.node.proto is None:
+            ref.node.fields[ref.name] = items
+    tree.refresh()
+    return node
+
+
+def reexpand(tree: SceneTree, node: Node) -> Node:
+    """Expand a PROTO instance anew from its (changed) interface values; same id, same place."""
+    info = node.proto
+    model = load_proto(info.source.path)
+    raw = Node(info.name, info.span, None, info.def_name)
+    raw.fields = {name: Typed(model.fields[name].type, value) for name, value in info.values.items()
+                  if name in model.fields}
+    scene = tree.scene
+    expander = Expander(scene)
+    resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
+    new = expander.expand(raw, resolver, top_level=True)
+    if new is None or expander.result.errors:
+        raise WbtcError(f"PROTO {info.name} cannot be expanded with the new values")
+    _replace(tree, node, new)
+    return new
+
+
+def _replace(tree: SceneTree, old: Node, new: Node) -> None:
+    node_id = tree.node_id(old)
+    parent = tree.by_id.get(tree.parents.get(node_id, -1))
+    holders: list[Any] = [tree.scene.nodes] if parent is tree.root or parent is None else []
+    if parent is not None and parent is not tree.root:
+        fields = parent.proto.values if parent.proto is not None else parent.fields
+        holders += [v for v in fields.values() if isinstance(v, list)]
+        for name, value in fields.items():
+            if value is old:
+                fields[name] = new
+    for holder in holders:
+        for i, item in enumerate(holder):
+            if item is old:
+                holder[i] = new
+    tree.ids[id(new)] = node_id
+    tree.by_id[node_id] = new
+    for ref in tree.fields:
+        if ref.node is old:
+            ref.node = new
+    tree.refresh()
+
+
+def export_string(node: Node) -> str:
+    """`exportString`: the node as VRML (a PROTO instance with its interface values)."""
+    if node.proto is None:
+        return format_node(node)
+    model = load_proto(node.proto.source.path)
+    head = f"DEF {node.proto.def_name} " if node.proto.def_name else ""
+    lines = [f"{head}{node.proto.name} {{"]
+    for name, value in node.proto.values.items():
+        interface = model.fields.get(name)
+        if interface is None or value is None or value == []:
+            continue
+        lines.append(f"  {name} {format_value(value, interface.type, lambda n: format_node(n, '  '))}")
+    lines.append("}")
+    return "\n".join(lines)
+
+
+def export_image(sim: Simulation, path: str, quality: int) -> None:
+    """`exportImage`: the Viewpoint's view saved as PNG or JPEG (by extension)."""
+    from PIL import Image
+
+    try:
+        camera = sim.model.camera("viewpoint").id
+    except KeyError:
+        camera = -1
+    rgb = sim.render(camera, 640, 480)
+    image = Image.fromarray(rgb)
+    if path.lower().endswith((".jpg", ".jpeg")):
+        image.save(path, quality=max(1, min(int(quality), 100)))
+    else:
+        image.save(path)

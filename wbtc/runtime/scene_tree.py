@@ -1,0 +1,261 @@
+"""The world as a Supervisor sees it: node ids, DEF names, parents, fields and their values.
+
+Webots gives every node a unique id (the root Group is 0) and shows a PROTO instance as one node
+whose fields are the PROTO's interface; the nodes inside it are hidden except for those passed in
+through its fields (`getFromProtoDef` and `getBaseNodeField` reach the rest). Here the expanded
+scene is walked the same way: a PROTO instance is its expanded root node, with `node.proto`
+remembering the instance (name, interface values).
+
+Field values cross the wire as plain Python (lists of floats, str, bool, int); `to_typed` turns
+them back into the scene's typed values (NamedTuples) when a supervisor writes a field.
+
+Not honoured yet: fields of nodes hidden inside PROTO instances when read through a node reached
+by `getFromProtoDef` are read from the expanded node (as `getBaseNodeField` does).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from wbtc.proto.model import load_proto
+from wbtc.scene.model import Node, Scene
+from wbtc.vrml.values import _TUPLES
+
+#: Webots' field type codes (WB_SF_*; WB_MF_* = WB_SF_* | 0x10).
+TYPE_CODES = {"SFBool": 0x01, "SFInt32": 0x02, "SFFloat": 0x03, "SFVec2f": 0x04, "SFVec3f": 0x05,
+              "SFRotation": 0x06, "SFColor": 0x07, "SFString": 0x08, "SFNode": 0x09}
+TYPE_CODES.update({"MF" + name[2:]: code | 0x10 for name, code in list(TYPE_CODES.items())})
+
+#: The root Group's id, as in Webots.
+ROOT_ID = 0
+
+
+@dataclass
+class FieldRef:
+    """One field of one node as a supervisor holds it."""
+
+    id: int
+    node: Node
+    name: str
+    type: str
+    proto: bool  # True: a PROTO interface field; False: a field of the (expanded) built-in node
+
+
+class SceneTree:
+    """Ids, parents and DEF names of every node of an expanded scene."""
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self.root = Node("Group", scene.nodes[0].span if scene.nodes else None, None)  # type: ignore[arg-type]
+        self.by_id: dict[int, Node] = {ROOT_ID: self.root}
+        self.ids: dict[int, int] = {id(self.root): ROOT_ID}
+        self.parents: dict[int, int] = {}
+        self.fields: list[FieldRef] = []
+        self.field_keys: dict[tuple[int, str, bool], int] = {}
+        self.refresh()
+
+    # -- ids ----------------------------------------------------------------------------------------
+    def refresh(self) -> None:
+        """Give ids to nodes not seen yet (after an import) and recompute every parent."""
+        self.parents = {}
+        for parent, node in self._edges(self.root, self.scene.nodes, hidden=True):
+            if id(node) not in self.ids:
+                new = max(self.by_id) + 1
+                self.ids[id(node)] = new
+                self.by_id[new] = node
+            self.parents.setdefault(self.ids[id(node)], self.ids[id(parent)])
+
+    def _edges(self, parent: Node, children: list, hidden: bool) -> Iterator[tuple[Node, Node]]:
+        """(parent, child) pairs depth first, in file order; `hidden` also enters PROTO internals."""
+        for child in children:
+            if not isinstance(child, Node):
+                continue
+            yield parent, child
+            yield from self._edges(child, list(self.visible_children(child)), hidden)
+            if hidden and child.proto is not None:
+                yield from self._edges(child, list(child.child_nodes()), hidden)
+
+    def visible_children(self, node: Node) -> Iterator[Node]:
+        """The nodes a supervisor reaches from `node` through its fields."""
+        if node is self.root:
+            yield from self.scene.nodes
+        elif node.proto is not None:
+            for value in node.proto.values.values():
+                yield from _nodes(value)
+        else:
+            yield from node.child_nodes()
+
+    def node_id(self, node: Node) -> int:
+        """The id of a node (assigned on first sight)."""
+        if id(node) not in self.ids:
+            self.refresh()
+        return self.ids.get(id(node), -1)
+
+    def remove(self, node: Node) -> bool:
+        """Take a node out of the field that holds it; False if it is not in a children-like list."""
+        parent_id = self.parents.get(self.node_id(node))
+        if parent_id is None:
+            return False
+        parent = self.by_id[parent_id]
+        holders = [self.scene.nodes] if parent is self.root else _lists_of(parent)
+        for holder in holders:
+            for i, item in enumerate(holder):
+                if item is node:
+                    del holder[i]
+                    self.refresh()
+                    return True
+        for name, value in list(_fields_of(parent).items()):
+            if value is node:
+                _fields_of(parent)[name] = None
+                self.refresh()
+                return True
+        return False
+
+    # -- references ------------------------------------------------------------------------------
+    def ref(self, node: Node | None) -> dict[str, Any] | None:
+        """The wire's node ref for a node (None for None)."""
+        if node is None:
+            return None
+        nid = self.node_id(node)
+        if node is self.root:
+            return {"id": ROOT_ID, "def": "", "type": "Group", "base_type": "Group", "proto": False, "parent": -1}
+        return {"id": nid, "def": def_name(node), "type": type_name(node), "base_type": node.base_type,
+                "proto": node.proto is not None, "parent": self.parents.get(nid, -1)}
+
+    def from_def(self, path: str, inside: Node | None = None) -> Node | None:
+        """`getFromDef`: the first node with that DEF name, depth first; `A.B` looks for B below A."""
+        start = inside if inside is not None else self.root
+        node: Node | None = start
+        for part in path.split("."):
+            if node is None:
+                return None
+            node = self._find_def(node, part, hidden=inside is not None and node is start)
+        return node
+
+    def _find_def(self, start: Node, name: str, hidden: bool) -> Node | None:
+        children = list(start.child_nodes()) if hidden else list(self.visible_children(start))
+        for _, node in self._edges(start, children, hidden=False):
+            if def_name(node) == name:
+                return node
+        return None
+
+    # -- fields ------------------------------------------------------------------------------------
+    def field_names(self, node: Node, proto: bool) -> list[tuple[str, str]]:
+        """(name, type) of a node's fields in declaration order; PROTO interface when `proto`."""
+        if node is self.root:
+            return [("children", "MFNode")]
+        if proto and node.proto is not None:
+            model = load_proto(node.proto.source.path)
+            return [(f.name, f.type) for f in model.fields.values()]
+        if node.schema is None:
+            return []
+        return [(f.name, f.type) for f in node.schema.fields.values()]
+
+    def field(self, node: Node, name: str, proto: bool) -> FieldRef | None:
+        """A field ref, allocated once per (node, name, kind)."""
+        types = dict(self.field_names(node, proto))
+        if name not in types:
+            return None
+        key = (id(node), name, proto)
+        fid = self.field_keys.get(key)
+        if fid is None:
+            fid = len(self.fields)
+            self.field_keys[key] = fid
+            self.fields.append(FieldRef(fid, node, name, types[name], proto))
+        return self.fields[fid]
+
+    def field_ref(self, ref: FieldRef) -> dict[str, Any]:
+        """The wire's field ref."""
+        count = len(items_of(self.raw(ref))) if ref.type.startswith("MF") else -1
+        return {"id": ref.id, "name": ref.name, "type": TYPE_CODES[ref.type], "count": count}
+
+    def raw(self, ref: FieldRef) -> Any:
+        """A field's stored (typed) value."""
+        if ref.node is self.root:
+            return self.scene.nodes
+        if ref.proto:
+            return ref.node.proto.values.get(ref.name)
+        return ref.node.get(ref.name)
+
+    def store(self, ref: FieldRef, value: Any) -> None:
+        """Replace a field's stored value."""
+        if ref.node is self.root:
+            self.scene.nodes[:] = value
+        elif ref.proto:
+            ref.node.proto.values[ref.name] = value
+        else:
+            ref.node.fields[ref.name] = value
+
+    def plain(self, ref: FieldRef, index: int) -> Any:
+        """A field's value (one item for MF fields) as the wire carries it."""
+        value = self.raw(ref)
+        if ref.type.startswith("MF"):
+            items = items_of(value)
+            if not -len(items) <= index < len(items):
+                raise IndexError(index)
+            value = items[index]
+        if ref.type.endswith("Node"):
+            return self.ref(value) if isinstance(value, Node) else None
+        return to_plain(value)
+
+
+def items_of(value: Any) -> list:
+    """An MF value's items as a list (MF numeric fields may be stored as numpy arrays)."""
+    return [] if value is None else list(value)
+
+
+def to_plain(value: Any) -> Any:
+    """A typed scalar or vector value as plain Python."""
+    if isinstance(value, np.ndarray):
+        return [float(v) for v in value.ravel()]
+    if isinstance(value, tuple):
+        return [float(v) for v in value]
+    if isinstance(value, np.generic):
+        return value.item()
+    return value
+
+
+def to_typed(field_type: str, value: Any) -> Any:
+    """A plain value (one element) typed as the scene stores it for `field_type`."""
+    elem = field_type[2:]
+    if elem in _TUPLES:
+        return _TUPLES[elem](*(float(v) for v in value))
+    if elem == "Float":
+        return float(value)
+    if elem == "Int32":
+        return int(value)
+    if elem == "Bool":
+        return bool(value)
+    return value
+
+
+def def_name(node: Node) -> str:
+    """A node's DEF name ('' when none); a PROTO instance's is the instance's."""
+    if node.proto is not None and node.proto.def_name:
+        return node.proto.def_name
+    return node.def_name or ""
+
+
+def type_name(node: Node) -> str:
+    """`getTypeName`: the PROTO name for instances, else the built-in type."""
+    return node.proto.name if node.proto is not None else node.base_type
+
+
+def _nodes(value: Any) -> Iterator[Node]:
+    if isinstance(value, Node):
+        yield value
+    elif isinstance(value, list):
+        for item in value:
+            yield from _nodes(item)
+
+
+def _fields_of(node: Node) -> dict[str, Any]:
+    return node.proto.values if node.proto is not None else node.fields
+
+
+def _lists_of(node: Node) -> list[list]:
+    return [value for value in _fields_of(node).values() if isinstance(value, list)]

@@ -1,0 +1,374 @@
+"""The simulator side of Webots' Supervisor API: queries answered at once, writes applied at the step.
+
+Queries (`getFromDef`, `getField`, `getSFVec3f`, `getPosition`, ...) read the world as of the last
+step. Writes are queued with the controller's step request and applied by `flush()` just before
+the simulation advances, in call order, as Webots applies supervisor "set" operations:
+
+- a Solid's `translation`/`rotation` move its body at once (see `poses`);
+- any other field is stored in the scene and the world is recompiled (a PROTO instance whose field
+  changed is expanded anew), then the running state is carried over (see `rebuild`);
+- `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
+  takes a node out; both recompile, and the runner starts or stops the robots' controllers;
+- `simulationReset` reloads the world file (time 0; controllers keep running, as in Webots);
+  `simulationQuit(status)` ends the run with that exit code.
+
+Not honoured yet: `simulationSetMode` (recorded, the run goes on at full speed), `worldLoad`, movie
+`width`/`height`/`codec`/`quality`/`acceleration`/`caption` (wbtc's own MP4/GIF settings are used),
+`worldSave`, `animationStartRecording`, pose and contact-point tracking (answered on demand).
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.compiler import compile_scene
+from wbtc.compile.context import CompileOptions
+from wbtc.errors import WbtcError
+from wbtc.runtime import poses, scene_ops
+from wbtc.runtime.rebuild import swap_model
+from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, to_typed
+from wbtc.runtime.simulation import RobotState, Simulation
+from wbtc.scene.model import Node, Scene
+
+_POSE_FIELDS = ("translation", "rotation")
+
+
+class SupervisorError(Exception):
+    """A supervisor request the simulator refuses (the message goes to the controller's stderr)."""
+
+
+@dataclass
+class FlushResult:
+    """What the runner must do after a flush."""
+
+    rebuilt: bool = False
+    reset: bool = False
+    restart: list[RobotState] = field(default_factory=list)
+    time_shift: float = 0.0  # ms by which a reset moved time back
+
+
+class SupervisorHub:
+    """Every supervisor controller's view of the world, and the queue of their writes."""
+
+    def __init__(self, sim: Simulation, scene: Scene, world: Path, options: CompileOptions | None = None) -> None:
+        self.sim = sim
+        self.world = world
+        self.options = options or CompileOptions()
+        self.tree = SceneTree(scene)
+        self.pending: list[tuple[RobotState, str, tuple]] = []
+        self.quit_status: int | None = None
+        self.mode = 1
+        self.applied_forces: list[int] = []
+        self.changes = FlushResult()
+        self.movie: Any = None  # a wbtc.runtime.record.Recorder while movieStartRecording runs
+
+    # -- queries ------------------------------------------------------------------------------------
+    def call(self, robot: RobotState, op: str, args: tuple) -> Any:
+        """Answer one synchronous request."""
+        tree = self.tree
+        if op == "getRoot":
+            return tree.ref(tree.root)
+        if op == "getSelf":
+            return tree.ref(robot.entry.node)
+        if op == "getFromDef":
+            inside = tree.by_id.get(int(args[1])) if len(args) > 1 and int(args[1]) >= 0 else None
+            return tree.ref(tree.from_def(str(args[0]), inside))
+        if op == "getFromId":
+            return tree.ref(tree.by_id.get(int(args[0])))
+        if op == "getFromDevice":
+            tag = int(args[0])
+            devices = robot.entry.devices
+            return tree.ref(devices[tag].node) if 0 <= tag < len(devices) else None
+        if op == "simulationGetMode":
+            return self.mode
+        if op.startswith("node."):
+            return self._node_query(op[5:], self._node(args[0]), args[1:])
+        if op == "field.get":
+            return self._field_get(self._field(args[0]), int(args[1]))
+        if op == "field.getCount":
+            ref = self._field(args[0])
+            return len(items_of(self.tree.raw(ref))) if ref.type.startswith("MF") else -1
+        raise SupervisorError(f"Error: {op}() is not supported by wbtc yet.")
+
+    def _node_query(self, op: str, node: Node, args: tuple) -> Any:
+        tree, sim = self.tree, self.sim
+        if op in ("getField", "getFieldByIndex"):
+            # getField of a PROTO instance is an interface field; the base flag (getBaseNodeField, once
+            # getProtoField) asks for the field of the built-in node the PROTO expands to.
+            interface = node.proto is not None and not (len(args) > 1 and bool(args[1]))
+            if op == "getFieldByIndex":
+                names = tree.field_names(node, interface)
+                index = int(args[0])
+                if not 0 <= index < len(names):
+                    return None
+                name = names[index][0]
+            else:
+                name = str(args[0])
+            ref = tree.field(node, name, interface)
+            return tree.field_ref(ref) if ref is not None else None
+        if op == "getNumberOfFields":
+            return len(tree.field_names(node, node.proto is not None and not (args and bool(args[0]))))
+        if op in ("getPosition", "getOrientation", "getPose"):
+            rot, pos = poses.world_pose(sim, node, self._parents())
+            if op == "getPosition":
+                return [float(v) for v in pos]
+            if op == "getOrientation":
+                return [float(v) for v in rot.ravel()]
+            return self._pose(rot, pos, args)
+        if op == "getCenterOfMass":
+            body = poses.solid_body(sim, node)
+            com = sim.data.subtree_com[body] if body is not None else np.zeros(3)
+            return [float(v) for v in sim.from_model @ com]
+        if op == "getVelocity":
+            return poses.velocity(sim, node)
+        if op == "getContactPoints":
+            return self._contacts(node, bool(args[0]) if args else False)
+        if op == "getStaticBalance":
+            return bool(np.abs(sim.data.qvel).max(initial=0.0) < 1e-3)
+        if op == "exportString":
+            return scene_ops.export_string(node)
+        raise SupervisorError(f"Error: {op}() is not supported by wbtc yet.")
+
+    def _pose(self, rot: np.ndarray, pos: np.ndarray, args: tuple) -> list[float]:
+        matrix = np.eye(4)
+        matrix[:3, :3], matrix[:3, 3] = rot, pos
+        if args and int(args[0]) >= 0:
+            frot, fpos = poses.world_pose(self.sim, self._node(args[0]), self._parents())
+            base = np.eye(4)
+            base[:3, :3], base[:3, 3] = frot, fpos
+            matrix = np.linalg.inv(base) @ matrix
+        return [float(v) for v in matrix.ravel()]
+
+    def _contacts(self, node: Node, descendants: bool) -> list[tuple[list[float], int]]:
+        sim = self.sim
+        body = poses.solid_body(sim, node)
+        if body is None:
+            return []
+        owners = {sim.model.body(name).id: n for n in self.tree.by_id.values()
+                  if (name := (sim.table.solids.get(id(n)) or ("",))[0])}
+        points = []
+        for i in range(sim.data.ncon):
+            contact = sim.data.contact[i]
+            for geom in (contact.geom1, contact.geom2):
+                b = int(sim.model.geom_bodyid[geom])
+                if b == body or (descendants and poses._descends(sim.model, b, body)):
+                    owner = owners.get(b, node)
+                    points.append(([float(v) for v in sim.from_model @ contact.pos], self.tree.node_id(owner)))
+                    break
+        return points
+
+    def _field_get(self, ref: FieldRef, index: int) -> Any:
+        if ref.name in _POSE_FIELDS and not ref.type.startswith("MF"):
+            live = poses.local_pose(self.sim, ref.node)
+            if live is not None:
+                return live[0] if ref.name == "translation" else live[1]
+        try:
+            return self.tree.plain(ref, index)
+        except IndexError:
+            raise SupervisorError(f"Error: index {index} out of range for field '{ref.name}'.") from None
+
+    def _node(self, node_id: Any) -> Node:
+        node = self.tree.by_id.get(int(node_id))
+        if node is None:
+            raise SupervisorError(f"Error: the node with id {node_id} does not exist (any more).")
+        return node
+
+    def _field(self, field_id: Any) -> FieldRef:
+        index = int(field_id)
+        if not 0 <= index < len(self.tree.fields):
+            raise SupervisorError(f"Error: unknown field id {field_id}.")
+        return self.tree.fields[index]
+
+    def _parents(self) -> dict[int, Node | None]:
+        by_id = self.tree.by_id
+        return {id(node): (by_id[p] if (p := self.tree.parents.get(nid)) not in (None, ROOT_ID) else None)
+                for nid, node in by_id.items()}
+
+    # -- writes -------------------------------------------------------------------------------------
+    def queue(self, robot: RobotState, op: str, args: tuple) -> None:
+        """Keep a write for the next flush."""
+        self.pending.append((robot, op, args))
+
+    def flush(self) -> FlushResult:
+        """Apply the queued writes in order (before the simulation advances)."""
+        outcome = FlushResult()
+        if not self.pending:
+            return outcome
+        pending, self.pending = self.pending, []
+        dirty: set[int] = set()
+        for robot, op, args in pending:
+            try:
+                self._apply(robot, op, args, dirty, outcome)
+            except SupervisorError as exc:
+                print(f"[{robot.entry.name}] {exc}", file=sys.stderr)
+        if outcome.reset:
+            outcome.time_shift = self.sim.time_ms
+            self._reload()
+        elif dirty:
+            self._recompile(dirty)
+            outcome.rebuilt = True
+        changes = self.changes
+        changes.rebuilt |= outcome.rebuilt
+        changes.reset |= outcome.reset
+        changes.restart += outcome.restart
+        changes.time_shift += outcome.time_shift
+        return outcome
+
+    def take_changes(self) -> FlushResult:
+        """Everything flushed since the last call (flushes also happen inside controllers' calls)."""
+        changes, self.changes = self.changes, FlushResult()
+        return changes
+
+    def _apply(self, robot: RobotState, op: str, args: tuple, dirty: set[int], outcome: FlushResult) -> None:
+        sim = self.sim
+        if op == "simulationQuit":
+            self.quit_status = int(args[0])
+        elif op == "simulationReset":
+            outcome.reset = True
+        elif op == "simulationResetPhysics":
+            poses.reset_physics(sim, None)
+        elif op == "simulationSetMode":
+            self.mode = int(args[0])
+        elif op == "setLabel":
+            label_id, text, x, y, size, color, transparency, font = args[:8]
+            sim.labels[int(label_id)] = (str(text), float(x), float(y), float(size), int(color),
+                                         float(transparency), str(font))
+        elif op == "exportImage":
+            scene_ops.export_image(sim, str(args[0]), int(args[1]))
+        elif op == "movieStartRecording":
+            self._movie_start(Path(str(args[0])))
+        elif op == "movieStopRecording":
+            self.close_movie()
+        elif op.startswith("node."):
+            self._node_write(op[5:], self._node(args[0]), args[1:], dirty, outcome)
+        elif op.startswith("field."):
+            self._field_write(op[6:], self._field(args[0]), args[1:], dirty)
+        else:
+            raise SupervisorError(f"Warning: {op}() is not supported by wbtc yet; ignored.")
+
+    def _node_write(self, op: str, node: Node, args: tuple, dirty: set[int], outcome: FlushResult) -> None:
+        sim = self.sim
+        if op == "resetPhysics":
+            poses.reset_physics(sim, node)
+        elif op == "setVelocity":
+            poses.set_velocity(sim, node, list(args[0]))
+        elif op in ("addForce", "addForceWithOffset", "addTorque"):
+            self._force(op, node, args)
+        elif op == "restartController":
+            outcome.restart += [r for r in sim.robots if r.entry.node is node]
+        elif op == "remove":
+            holder = self.tree.parents.get(self.tree.node_id(node))
+            if not self.tree.remove(node):
+                raise SupervisorError("Error: this node cannot be removed.")
+            dirty.add(holder if holder is not None else ROOT_ID)
+
+    def _force(self, op: str, node: Node, args: tuple) -> None:
+        sim = self.sim
+        body = poses.solid_body(sim, node)
+        if body is None:
+            return
+        vector = np.asarray(args[0], dtype=float)
+        relative = bool(args[-1])
+        rot = sim.data.xmat[body].reshape(3, 3)
+        # Webots' vectors are in the world's frame, or in the Solid's frame when `relative`.
+        world = rot @ vector if relative else sim.to_model @ vector
+        if op == "addTorque":
+            sim.data.xfrc_applied[body, 3:] += world
+        else:
+            sim.data.xfrc_applied[body, :3] += world
+            if op == "addForceWithOffset":
+                offset = rot @ np.asarray(args[1], dtype=float)
+                sim.data.xfrc_applied[body, 3:] += np.cross(offset + sim.data.xpos[body] - sim.data.xipos[body],
+                                                            world)
+        self.applied_forces.append(body)
+
+    def after_step(self) -> None:
+        """Forces added by a supervisor last one step, as in Webots; a movie being recorded gets its frames."""
+        for body in self.applied_forces:
+            self.sim.data.xfrc_applied[body] = 0.0
+        self.applied_forces = []
+        if self.movie is not None:
+            self.movie(self.sim)
+
+    def _movie_start(self, path: Path) -> None:
+        """`movieStartRecording`: the Viewpoint's video from now on (MP4, or GIF by the file's suffix)."""
+        from wbtc.runtime.record import Recorder
+
+        self.close_movie()
+        try:
+            self.movie = Recorder(self.sim, path)
+        except WbtcError as exc:
+            raise SupervisorError(f"Error: movieStartRecording(): {exc}") from None
+        # Frame k is due at k / fps of simulated time: start counting from now, not from 0.
+        self.movie.frames = int(self.sim.time * self.movie.fps) + 1
+
+    def close_movie(self) -> None:
+        """Finish the movie being recorded, if any (at `movieStopRecording` or the end of the run)."""
+        movie, self.movie = self.movie, None
+        if movie is not None:
+            try:
+                movie.close()
+            except WbtcError as exc:
+                print(f"wbtc: {exc}", file=sys.stderr)
+
+    def _field_write(self, op: str, ref: FieldRef, args: tuple, dirty: set[int]) -> None:
+        tree = self.tree
+        owner = tree.node_id(ref.node)
+        if op == "set":
+            index, value = int(args[0]), args[1]
+            if ref.name in _POSE_FIELDS and not ref.type.startswith("MF") and poses.solid_body(self.sim, ref.node):
+                poses.set_local_pose(self.sim, ref.node, value if ref.name == "translation" else None,
+                                     value if ref.name == "rotation" else None)
+                scene_ops.store_pose(ref.node, ref.name, to_typed(ref.type, value))
+                return
+            scene_ops.set_value(tree, ref, index, value)
+        elif op == "insert":
+            scene_ops.insert_value(tree, ref, int(args[0]), args[1])
+        elif op == "remove":
+            scene_ops.remove_value(tree, ref, int(args[0]))
+        elif op in ("importMFNode", "importSFNode"):
+            position = int(args[0]) if op == "importMFNode" else -1
+            text = str(args[-1])
+            try:
+                scene_ops.import_node(tree, ref, position, text)
+            except WbtcError as exc:
+                raise SupervisorError(f"Error: {op}FromString(): {exc}") from None
+        elif op == "removeSF":
+            tree.store(ref, None)
+        else:
+            raise SupervisorError(f"Warning: field {op}() is not supported by wbtc yet; ignored.")
+        dirty.add(owner)
+
+    # -- recompiling ------------------------------------------------------------------------------
+    def _recompile(self, dirty: set[int]) -> None:
+        tree = self.tree
+        for node_id in sorted(dirty):
+            node = tree.by_id.get(node_id)
+            if node is not None and node.proto is not None:
+                scene_ops.reexpand(tree, node)
+        tree.refresh()
+        result = compile_scene(tree.scene, self.options)
+        swap_model(self.sim, result)
+
+    def _reload(self) -> None:
+        """`simulationReset`: the world as loaded, at time 0; field handles keep pointing at their nodes."""
+        from wbtc.pipeline import load_world
+
+        scene, _ = load_world(self.world)
+        old = self.tree
+        self.tree = SceneTree(scene)
+        for ref in old.fields:  # same field ids, now on the reloaded nodes (a gone node keeps its old one)
+            node = self.tree.by_id.get(old.node_id(ref.node)) or ref.node
+            self.tree.fields.append(FieldRef(ref.id, node, ref.name, ref.type, ref.proto))
+            self.tree.field_keys[(id(node), ref.name, ref.proto)] = ref.id
+        result = compile_scene(scene, self.options)
+        swap_model(self.sim, result, keep_time=False)
+        self.sim.time_ms = 0.0
+        self.sim.labels = {}
+        mujoco.mj_forward(self.sim.model, self.sim.data)
