@@ -141,11 +141,11 @@ def _actuator(node: Node, joint: mujoco.MjsJoint, ctx: CompileContext, robot: Ro
     actuator.info = info(node)
     actuator.target = joint.name
     actuator.trntype = mujoco.mjtTrn.mjTRN_JOINT
-    # A velocity servo: force = kv (target - velocity). MuJoCo's implicit integrator makes any gain
-    # stable as long as the force is not clamped (a clamped force loses its implicit damping and
-    # overshoots wildly on light wheels), so the torque limit is enforced by the runtime, which
-    # lowers the gain when the servo asks for more than maxTorque; the model keeps `forcerange`
-    # for reference only.
+    # A velocity servo: force = kv (target - velocity), made unconditionally stable by the joint
+    # armature kv × timestep that tune_servos gives it (see there). A clamped force would break that
+    # (the armature stands for a damping the force no longer has), so the torque limit is enforced
+    # by the runtime, which lowers the gain (and the armature with it) when the servo asks for more
+    # than the available torque; the model keeps `forcerange` for reference only.
     actuator.set_to_velocity(kv=1.0)
     actuator.forcelimited = mujoco.mjtLimited.mjLIMITED_FALSE
     actuator.forcerange = [-limit, limit]
@@ -176,6 +176,15 @@ def tune_servos(spec: mujoco.MjSpec, model: mujoco.MjModel) -> None:
 
     Webots' ODE motor reaches the target velocity within one step unless that needs more than
     maxTorque: kv = SERVO_GAIN × (the joint's floating inertia) / timestep does the same.
+
+    The servo's damping is integrated implicitly by hand: the joint gets armature kv × timestep,
+    so one step gives Δv = h·kv·(target − v) / (I + h·kv), which is what MuJoCo's implicit
+    integrators do — but armature is part of the mass matrix the constraint solver works with,
+    like ODE's motor, a velocity constraint solved together with the contacts. (Under implicitfast
+    the solver computes contact forces for a servo it takes to be explicit, i.e. for a wheel that
+    overshoots its target many times over, and those forces throw the robot: a spinning e-puck
+    sprang back 0.8 rad and hopped 7 mm when its wheels reversed.) The integrator is then plain
+    Euler (world.setup_world); the runtime keeps armature = gain × timestep as it lowers the gain.
     """
     for i in range(model.nu):
         joint = model.actuator_trnid[i, 0]
@@ -183,6 +192,8 @@ def tune_servos(spec: mujoco.MjSpec, model: mujoco.MjModel) -> None:
         kv = SERVO_GAIN * inertia / model.opt.timestep
         model.actuator_gainprm[i, 0] = kv
         model.actuator_biasprm[i, 2] = -kv
+        model.dof_armature[model.jnt_dofadr[joint]] = kv * model.opt.timestep
         element = spec.actuator(model.actuator(i).name)
         element.gainprm[0] = kv
         element.biasprm[2] = -kv
+        spec.joint(model.joint(joint).name).armature = kv * model.opt.timestep

@@ -70,8 +70,10 @@ def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
     table.basic_time_step, table.substeps = step, substeps
     spec.option.timestep = step / substeps / 1000.0
     spec.option.gravity = [0.0, 0.0, -gravity]
-    # Implicit integration of the stiff velocity servos that realise Webots motors.
-    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    # Semi-implicit Euler: the motor servos' implicit damping is carried by their joints' armature
+    # (see device.tune_servos), which the constraint solver sees, unlike implicitfast's, which it
+    # does not (contacts then fought a servo they took for explicit: hops, spring-back, slip).
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_EULER
     spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
     spec.visual.global_.offwidth = max(spec.visual.global_.offwidth, 1280)
     spec.visual.global_.offheight = max(spec.visual.global_.offheight, 720)

@@ -1,7 +1,9 @@
 """Webots' motor model on top of the compiler's velocity servos.
 
 Every basic time step a motor computes the velocity Webots would ask ODE for and hands it to its
-MuJoCo actuator as the servo's target, with the servo's force limit set to the available torque:
+MuJoCo actuator as the servo's target, with the servo's gain limited so that its torque stays within
+the available torque, and the joint's armature set to gain × timestep (the servo's implicit damping,
+which the contact solver then sees, as ODE solves its motors with the contacts):
 
 - position control (the default, and after any finite `setPosition`): a PID on the position
   error, `Vc = P·e + I·∫e + D·(e_prev − e)/ts`, clamped to the requested velocity;
@@ -85,6 +87,7 @@ class Motor:
             # Force control: a plain motor (gain 1, no velocity feedback), as ODE's constant force.
             model.actuator_gainprm[a, 0] = 1.0
             model.actuator_biasprm[a, 2] = 0.0
+            model.dof_armature[self.dof_adr] = 0.0  # Webots joints have none; it only served the servo
             data.ctrl[a] = self.torque
             return
         if math.isinf(self.target):
@@ -104,6 +107,8 @@ class Motor:
         self._limit_gain(data, wanted)
         model.actuator_gainprm[a, 0] = self.gain
         model.actuator_biasprm[a, 2] = -self.gain
+        # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
+        model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
         data.ctrl[a] = wanted
 
     def _limit_gain(self, data: mujoco.MjData, wanted: float) -> None:
@@ -111,7 +116,8 @@ class Motor:
 
         The servo's force is gain × (target − velocity) and only shrinks as the joint catches up, so
         capping the gain at available / |target − velocity| at the start of each basic step keeps
-        the effort within the limit without clamping (which would lose the implicit damping).
+        the effort within the limit without clamping (which would break the implicit damping that
+        the joint's armature, gain × timestep, stands for: see compile.device.tune_servos).
         """
         error = abs(wanted - float(data.qvel[self.dof_adr]))
         self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
