@@ -49,7 +49,12 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
             else:
                 supervisor(op, args)
         elif tag in robot.motors:
-            robot.motors[tag].apply(op, args)
+            if op in ("enableTorqueFeedback", "enableForceFeedback"):
+                robot.motors[tag].enable_feedback(int(args[0]), now)
+            elif op in ("disableTorqueFeedback", "disableForceFeedback"):
+                robot.motors[tag].enable_feedback(0, now)
+            else:
+                robot.motors[tag].apply(op, args)
         elif tag in robot.sensors:
             sensor = robot.sensors[tag]
             if op == "enable":
@@ -94,6 +99,10 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
         if sensor.fresh:
             values[tag] = sensor.value
             sensor.fresh = False
+    for tag, motor in robot.motors.items():
+        if motor.feedback_value is not None:
+            values[tag] = motor.feedback_value
+            motor.feedback_value = None
     message: dict[str, Any] = {"status": status, "time": sim.time, "values": values}
     if robot.keys is not None:
         message["keys"] = robot.keys

@@ -20,6 +20,7 @@ from wbtc.pipeline import load_world
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.record import Recorder
 from wbtc.runtime.runner import RunOptions, run
+from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
 from wbtc.runtime.supervisor import SupervisorHub
 
@@ -42,6 +43,7 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
               f"(`wbtc compile` lists them)", file=sys.stderr)
     sim = Simulation(result, seed=seed, noise=noise)
     hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
+    sim.tree = hub.tree if hub is not None else SceneTree(scene)  # Webots node ids (camera recognition)
     recorder = _recorder(sim, record)
     viewer = None if headless or not _has_display() else _open_viewer(sim)
     hooks = ([(lambda s: _sync(viewer))] if viewer is not None else []) + ([recorder] if recorder is not None else [])

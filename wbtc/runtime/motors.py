@@ -54,6 +54,9 @@ class Motor:
         self.integral = 0.0
         self.prev_error = 0.0
         self.command = 0.0
+        self.feedback_period = 0  # torque/force feedback sampling period, ms (0: disabled)
+        self.feedback_due = math.inf
+        self.feedback_value: float | None = None  # sampled since the last reply, else None
 
     def apply(self, op: str, args: tuple) -> None:
         """One command from the controller."""
@@ -125,4 +128,15 @@ class Motor:
     def feedback(self, data: mujoco.MjData) -> float:
         """The torque/force the actuator applied (torque feedback)."""
         return float(data.actuator_force[self.actuator])
+
+    def enable_feedback(self, period: int, now_ms: float) -> None:
+        """`enableTorqueFeedback(p)`/`enableForceFeedback(p)`; 0 disables (first value p ms later)."""
+        self.feedback_period = int(period)
+        self.feedback_due = now_ms + self.feedback_period if self.feedback_period > 0 else math.inf
+
+    def sample_feedback(self, data: mujoco.MjData, now_ms: float) -> None:
+        """Sample the feedback when due (after the physics step)."""
+        if now_ms + 1e-9 >= self.feedback_due:
+            self.feedback_value = self.feedback(data)
+            self.feedback_due += self.feedback_period
 

@@ -24,7 +24,7 @@ from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.runtime.surface import SurfaceColours
 
 _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "available", "torque", "integral",
-                "prev_error", "command")
+                "prev_error", "command", "feedback_period", "feedback_due", "feedback_value")
 _SENSOR_STATE = ("period", "next_due", "value", "fresh")
 
 

@@ -181,7 +181,8 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             break
         due = min([link.wake_ms for link in active], default=math.inf)
         while sim.time_ms + 1e-9 < min(due, limit_ms):
-            while keys and keys[0][0] * 1000.0 <= sim.time_ms + 1e-9:
+            # A key pressed during the coming step is down at its end, when the keyboard samples.
+            while keys and keys[0][0] * 1000.0 <= sim.time_ms + sim.step_ms + 1e-9:
                 sim.keys_down.append(keys.pop(0)[1])
             sim.step()
             if hub is not None:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -41,7 +42,7 @@ class RobotState:
     keys: list[int] | None = None
     custom_data: str = ""
     distance: float = 0.0
-    last_pos: np.ndarray | None = None
+    last_pos: list[float] = field(default_factory=list)
 
 
 class Simulation:
@@ -65,6 +66,7 @@ class Simulation:
         self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
         self.keys_down: list[int] = []
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
+        self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
@@ -77,7 +79,7 @@ class Simulation:
         state = RobotState(entry, body, bodies, custom_data=entry.custom_data)
         for tag, dev in enumerate(entry.devices):
             self._device(state, tag, dev)
-        state.last_pos = self.data.xpos[body].copy()
+        state.last_pos = self.data.xpos[body].tolist()
         return state
 
     def _device(self, state: RobotState, tag: int, dev: DeviceEntry) -> None:
@@ -117,12 +119,15 @@ class Simulation:
             for sensor in robot.sensors.values():
                 if sensor.period > 0:
                     sensor.tick(self, self.time_ms)
+            for motor in robot.motors.values():
+                if motor.feedback_period > 0:
+                    motor.sample_feedback(self.data, self.time_ms)
             if self.time_ms + 1e-9 >= robot.keyboard_due:
                 robot.keys = list(self.keys_down)
                 robot.keyboard_due += robot.keyboard_period
-            pos = self.data.xpos[robot.body]
-            robot.distance += float(np.linalg.norm(pos - robot.last_pos))
-            robot.last_pos = pos.copy()
+            pos = self.data.xpos[robot.body].tolist()  # plain floats: math.dist beats numpy on 3 numbers
+            robot.distance += math.dist(pos, robot.last_pos)
+            robot.last_pos = pos
         self.keys_down = []
 
     def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False) -> Offscreen:

@@ -60,7 +60,7 @@ class SupervisorHub:
         self.sim = sim
         self.world = world
         self.options = options or CompileOptions()
-        self.tree = SceneTree(scene)
+        self.tree = sim.tree = SceneTree(scene)
         self.pending: list[tuple[RobotState, str, tuple]] = []
         self.quit_status: int | None = None
         self.mode = 1
@@ -362,7 +362,7 @@ class SupervisorHub:
 
         scene, _ = load_world(self.world)
         old = self.tree
-        self.tree = SceneTree(scene)
+        self.tree = self.sim.tree = SceneTree(scene)
         for ref in old.fields:  # same field ids, now on the reloaded nodes (a gone node keeps its old one)
             node = self.tree.by_id.get(old.node_id(ref.node)) or ref.node
             self.tree.fields.append(FieldRef(ref.id, node, ref.name, ref.type, ref.proto))
