@@ -13,6 +13,8 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
+import mujoco
+
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
@@ -46,7 +48,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     sim.tree = hub.tree if hub is not None else SceneTree(scene)  # Webots node ids (camera recognition)
     recorder = _recorder(sim, record)
     viewer = None if headless or not _has_display() else _open_viewer(sim)
-    hooks = ([(lambda s: _sync(viewer))] if viewer is not None else []) + ([recorder] if recorder is not None else [])
+    hooks = [(lambda s: _sync(viewer, s))] if viewer is not None else []
+    hooks += [recorder] if recorder is not None else []
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
     try:
         options = RunOptions(duration=duration, realtime=realtime or viewer is not None, keys=key_script,
@@ -109,8 +112,15 @@ def _open_viewer(sim: Simulation):  # noqa: ANN202  (mujoco.viewer's handle type
         return None
 
 
-def _sync(viewer) -> bool:  # noqa: ANN001
+def _sync(viewer, sim: Simulation) -> bool:  # noqa: ANN001
     if not viewer.is_running():
         return False
+    if sim.labels and hasattr(viewer, "set_texts"):
+        # Supervisor labels (setLabel) as the viewer's top-left overlay text, in id order.
+        text = "\n".join(label[0] for _, label in sorted(sim.labels.items()) if label[0])
+        try:
+            viewer.set_texts((None, int(mujoco.mjtGridPos.mjGRID_TOPLEFT), text, ""))
+        except (TypeError, ValueError):  # older viewers take other shapes: labels stay in recordings only
+            pass
     viewer.sync()
     return True
