@@ -98,3 +98,5 @@ def test_movie_recording_from_a_supervisor(tmp_path):
     # The red label "referee" is drawn in the top-left corner (nothing red there in the scene itself).
     red = (corner[:, 0] > 150) & (corner[:, 1] < 90) & (corner[:, 2] < 90)
     assert red.sum() >= 20
+    with Image.open(tmp_path / "shot.jpg") as shot:  # exportImage: the Viewpoint's view as a JPEG
+        assert (shot.format, shot.size) == ("JPEG", (640, 480))

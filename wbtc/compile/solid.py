@@ -10,9 +10,12 @@ Masses come from Physics nodes only: density × the volume of the Solid's own bo
 `mass`; `centerOfMass` and `inertiaMatrix` override the computed ones. Bodies get explicit
 inertials and every geom is massless to MuJoCo.
 
-Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `recognitionColors` (used by
-the runtime's camera recognition, not here), `locked`, hidden `linearVelocity`/`angularVelocity`;
-Physics `damping` is approximated with free-joint damping; Robot `battery`, `cpuConsumption`.
+Solids with `recognitionColors` are listed in the table for the runtime's camera recognition (and a
+Camera's entry gets its Recognition node's fields under `recognition`).
+
+Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `locked`, hidden
+`linearVelocity`/`angularVelocity`; Physics `damping` is approximated with free-joint damping;
+Robot `battery`, `cpuConsumption`.
 Robot `selfCollision FALSE` (the default) excludes every pair of the robot's colliding bodies.
 """
 
@@ -26,7 +29,7 @@ import numpy as np
 from wbtc.compile import appearance, device, geometry, joint, light
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
-from wbtc.compile.table import RobotEntry
+from wbtc.compile.table import Recognizable, RobotEntry, plain, plain_fields
 from wbtc.scene.model import Node
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "linearVelocity",
@@ -127,6 +130,10 @@ class BodyBuilder:
         ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy()))
         if node.def_name and node.def_name not in ctx.table.bodies:
             ctx.table.bodies[node.def_name] = body.name
+        colors = plain(node.get("recognitionColors"))
+        if colors:
+            ctx.table.recognizable.append(Recognizable(node, body.name, [[float(c) for c in color] for color in colors],
+                                                       str(node.get("model") or "")))
         physics = node.get("physics")
         has_physics = isinstance(physics, Node)
         top_level = parent is ctx.spec.worldbody
@@ -145,6 +152,10 @@ class BodyBuilder:
         if top_level and has_physics:
             body.first_joint().damping = [_damping_rate(physics, ctx) * body.mass, 0.0, 0.0]
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
+        if entry is not None and entry.type == "Camera":
+            # The controller reads the Recognition node's fields (plain_fields leaves node fields out).
+            recognition = node.get("recognition")
+            entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
         self.walk_children(node.get("children"), body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)

@@ -77,6 +77,23 @@ class RobotEntry:
 
 
 @dataclass
+class Recognizable:
+    """A Solid a camera's Recognition can see (its `recognitionColors` is not empty).
+
+    Attributes:
+        node: the Solid in the expanded scene (its Webots node id comes from the scene tree).
+        body: its MuJoCo body; its extent is that of the geoms of this body and the ones below it.
+        colors: `recognitionColors` as [r, g, b] lists.
+        model: the Solid's `model` field.
+    """
+
+    node: Node
+    body: str
+    colors: list[list[float]]
+    model: str
+
+
+@dataclass
 class DeviceTable:
     """Every robot of a world and how the world maps to MuJoCo.
 
@@ -92,6 +109,7 @@ class DeviceTable:
         solids: for every Solid node (by `id(node)`), its MuJoCo body and the frame (position, quaternion)
             its translation/rotation are relative to, in the parent body: what the supervisor needs to read
             and write a Solid's pose.
+        recognizable: the Solids camera recognition can report, in scene order.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -103,6 +121,7 @@ class DeviceTable:
     bodies: dict[str, str] = field(default_factory=dict)
     viewpoint: dict[str, Any] | None = None
     solids: dict[int, tuple[str, np.ndarray, np.ndarray]] = field(default_factory=dict)
+    recognizable: list[Recognizable] = field(default_factory=list)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

@@ -7,12 +7,15 @@
   `near`, into a BGRA image (rows from the top) in a shared-memory block of its own that the
   controller reads (`{"shm": name}`); a new block, under a new name, when the size changes; plain
   bytes in the message when shared memory is unavailable. `Simulation.close` unlinks the blocks.
+  `noise` adds Gaussian noise of σ = noise × 255 to every channel (none with noise off). With a
+  Recognition node, `recognitionEnable(p)` adds `"objects"` to a sample every p ms (see `recognition`).
 - Emitter/Receiver: packets sent during a step reach the receivers on the same channel (−1 on
   either side: every channel) within `range` at the next basic step; radio ignores obstacles,
   infra-red needs a line of sight. Receivers queue them until their next sample.
 
 Not honoured yet: Emitter `aperture`, `baudRate`, `byteSize`, `bufferSize`; Receiver noise
-fields; Camera noise, recognition and `exposure`; serial emitters (treated as radio).
+fields; Camera `exposure`, `noiseMaskUrl`, segmentation images (see `recognition` for the rest);
+serial emitters (treated as radio).
 """
 
 from __future__ import annotations
@@ -25,8 +28,10 @@ from typing import TYPE_CHECKING, Any
 import mujoco
 import numpy as np
 
-from wbtc.compile.table import DeviceEntry
+from wbtc.compile.table import DeviceEntry, plain_fields
+from wbtc.runtime.recognition import Settings, Target, recognize, targets
 from wbtc.runtime.sensors import Sensor
+from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -69,18 +74,42 @@ class Led:
 
 
 class Camera(Sensor):
-    """A Camera rendered by MuJoCo into a shared-memory BGRA image."""
+    """A Camera rendered by MuJoCo into a shared-memory BGRA image, with optional object recognition.
+
+    `period`/`next_due` are the image's; recognition has its own (`recognition_period`,
+    `recognition_due`). The camera ticks while either is on (`period` reads the image period, else
+    the recognition one) and a sample carries whichever is due: the image, `"objects"`, or both.
+    """
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        self.image_period = 0
+        self.recognition_period = 0
+        self.recognition_due = math.inf
         super().__init__(entry, sim, skip_bodies)
+        self.sim = sim
         self.width = int(entry.fields.get("width", 64))
         self.height = int(entry.fields.get("height", 64))
         self.near = float(entry.fields.get("near", 0.01))
+        self.fov = float(entry.fields.get("fieldOfView", 0.785398))
+        self.noise = float(entry.fields.get("noise", 0.0))
         self.camera = sim.model.camera(entry.camera).id
+        recognition = entry.node.get("recognition") if entry.node is not None else None
+        self.recognition = Settings.of(plain_fields(recognition)) if isinstance(recognition, Node) else None
+        self._targets: list[Target] | None = None
+        self._targets_model: Any = None
         self.block: shared_memory.SharedMemory | None = None
         self.pixels: np.ndarray | None = None  # (height, width, 4) BGRA, over the block when there is one
         self._finalizer: weakref.finalize | None = None
         self.use_shared = True
+
+    @property
+    def period(self) -> int:  # type: ignore[override]
+        """The image period, else the recognition period (what makes the simulation tick the camera)."""
+        return self.image_period or self.recognition_period
+
+    @period.setter
+    def period(self, value: int) -> None:
+        self.image_period = int(value)
 
     @property
     def value(self) -> Any:
@@ -95,11 +124,56 @@ class Camera(Sensor):
             value = {**value, "shm": None, "data": None}
         self._value = value
 
+    def command(self, op: str, args: tuple) -> None:
+        """Recognition on/off and the field of view (the controller has checked the values)."""
+        if op == "recognitionEnable" and self.recognition is not None:
+            self.recognition_period = max(int(args[0]), 0)
+            now = self.sim.time_ms
+            self.recognition_due = now + self.recognition_period if self.recognition_period > 0 else math.inf
+        elif op == "recognitionDisable":
+            self.recognition_period, self.recognition_due = 0, math.inf
+        elif op == "setFov":
+            self.fov = float(args[0])
+            fovy = 2 * math.atan(math.tan(self.fov / 2) * self.height / max(self.width, 1))
+            self.sim.model.cam_fovy[self.camera] = math.degrees(fovy)
+
+    def tick(self, sim: Simulation, now_ms: float) -> None:
+        """Render and/or recognize when due; both land in one value until the reply takes it."""
+        value: dict[str, Any] | None = None
+        if self.image_period > 0 and now_ms + 1e-9 >= self.next_due:
+            value = self.sample(sim)
+            self.next_due += self.image_period
+        if self.recognition_period > 0 and now_ms + 1e-9 >= self.recognition_due:
+            base = value or {"shm": None, "data": None, "width": self.width, "height": self.height}
+            value = {**base, "objects": self.recognize(sim)}
+            self.recognition_due += self.recognition_period
+        if value is None:
+            return
+        if self.fresh and isinstance(self._value, dict):  # not sent yet: keep what this sample does not renew
+            value = {**self._value, **{k: v for k, v in value.items() if v is not None}}
+        self.value = value
+        self.fresh = True
+
+    def recognize(self, sim: Simulation) -> list[dict[str, Any]]:
+        """The recognition objects seen now (see `recognition`)."""
+        if self.recognition is None:
+            return []
+        if self._targets is None or self._targets_model is not sim.model:
+            self._targets, self._targets_model = targets(sim), sim.model
+        pos, mat = self.frame(sim)
+        return recognize(sim, self._targets, np.asarray(pos), mat, self.fov, self.width, self.height,
+                         self.recognition, self.skip_bodies)
+
     def sample(self, sim: Simulation) -> dict[str, Any]:
-        """Render into the BGRA image; the value names the block (or carries the bytes)."""
+        """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
         rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near)
         pixels = self._image()
-        np.copyto(pixels[:, :, :3], rgb[::-1, :, ::-1])  # rows from the top, RGB to BGR
+        if self.noise > 0 and sim.noise_rng is not None:
+            # Webots: σ = noise × 255 on every channel, independently per pixel and per sample.
+            noisy = rgb[::-1, :, ::-1] + sim.noise_rng.normal(0.0, self.noise * 255.0, rgb.shape)
+            np.copyto(pixels[:, :, :3], np.clip(np.rint(noisy), 0, 255).astype(np.uint8))
+        else:
+            np.copyto(pixels[:, :, :3], rgb[::-1, :, ::-1])  # rows from the top, RGB to BGR
         if self.block is not None:
             return {"shm": self.block.name, "data": None, "width": self.width, "height": self.height}
         return {"shm": None, "data": pixels.tobytes(), "width": self.width, "height": self.height}

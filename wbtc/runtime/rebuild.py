@@ -25,7 +25,8 @@ from wbtc.runtime.surface import SurfaceColours
 
 _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "available", "torque", "integral",
                 "prev_error", "command", "feedback_period", "feedback_due", "feedback_value")
-_SENSOR_STATE = ("period", "next_due", "value", "fresh")
+# `period` before `image_period`: a Camera's period is a property over its image and recognition periods.
+_SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due")
 
 
 def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -> None:
