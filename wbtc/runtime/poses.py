@@ -18,6 +18,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.frames import axis_angle_quat, quat_mul, quat_rotate, quat_to_axis_angle
+from wbtc.runtime.simulation import descends
 from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
@@ -149,20 +150,20 @@ def reset_physics(sim: Simulation, node: Node | None) -> None:
     if body is None:
         return
     for b in range(model.nbody):
-        if _descends(model, b, body):
+        if descends(model, b, body):
             for j in range(int(model.body_jntnum[b])):
                 jnt = int(model.body_jntadr[b]) + j
                 adr = int(model.jnt_dofadr[jnt])
-                width = {int(mujoco.mjtJoint.mjJNT_FREE): 6, int(mujoco.mjtJoint.mjJNT_BALL): 3}.get(
-                    int(model.jnt_type[jnt]), 1)
+                width = dof_width(int(model.jnt_type[jnt]))
                 data.qvel[adr:adr + width] = 0.0
                 data.qacc_warmstart[adr:adr + width] = 0.0
     mujoco.mj_forward(model, data)  # so that velocity queries before the next step see it
 
 
-def _descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
-    while body > 0:
-        if body == ancestor:
-            return True
-        body = int(model.body_parentid[body])
-    return ancestor == 0
+def dof_width(joint_type: int, qpos: bool = False) -> int:
+    """How many qpos (or qvel) entries a joint of this type has."""
+    if joint_type == mujoco.mjtJoint.mjJNT_FREE:
+        return 7 if qpos else 6
+    if joint_type == mujoco.mjtJoint.mjJNT_BALL:
+        return 4 if qpos else 3
+    return 1

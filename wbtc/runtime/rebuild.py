@@ -18,6 +18,7 @@ import mujoco
 from wbtc.compile.compiler import CompileResult
 from wbtc.runtime.devices import Emitter, Led, Receiver
 from wbtc.runtime.motors import Motor
+from wbtc.runtime.poses import dof_width
 from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import Sensor
 from wbtc.runtime.simulation import RobotState, Simulation
@@ -96,8 +97,8 @@ def _copy_joints(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujo
             continue
         if old_model.jnt_type[k] != model.jnt_type[j]:
             continue
-        nq = _width(model.jnt_type[j], qpos=True)
-        nv = _width(model.jnt_type[j], qpos=False)
+        nq = dof_width(model.jnt_type[j], qpos=True)
+        nv = dof_width(model.jnt_type[j], qpos=False)
         qa, qb = model.jnt_qposadr[j], old_model.jnt_qposadr[k]
         va, vb = model.jnt_dofadr[j], old_model.jnt_dofadr[k]
         data.qpos[qa:qa + nq] = old_data.qpos[qb:qb + nq]
@@ -115,11 +116,3 @@ def _copy_actuators(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: m
         data.ctrl[a] = old_data.ctrl[k]
         model.actuator_gainprm[a] = old_model.actuator_gainprm[k]
         model.actuator_biasprm[a] = old_model.actuator_biasprm[k]
-
-
-def _width(joint_type: int, qpos: bool) -> int:
-    if joint_type == mujoco.mjtJoint.mjJNT_FREE:
-        return 7 if qpos else 6
-    if joint_type == mujoco.mjtJoint.mjJNT_BALL:
-        return 4 if qpos else 3
-    return 1

@@ -75,7 +75,7 @@ class Simulation:
 
     def _robot(self, entry: RobotEntry) -> RobotState:
         body = self.model.body(entry.body).id
-        bodies = frozenset(b for b in range(self.model.nbody) if _descends(self.model, b, body))
+        bodies = frozenset(b for b in range(self.model.nbody) if descends(self.model, b, body))
         state = RobotState(entry, body, bodies, custom_data=entry.custom_data)
         for tag, dev in enumerate(entry.devices):
             self._device(state, tag, dev)
@@ -160,7 +160,8 @@ class Simulation:
         return [float(c) for c in pos], [float(c) for c in quat_to_axis_angle(mat_to_quat(mat))]
 
 
-def _descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
+def descends(model: mujoco.MjModel, body: int, ancestor: int) -> bool:
+    """True if `body` is `ancestor` or below it (every body descends from the world body 0)."""
     while body > 0:
         if body == ancestor:
             return True

@@ -33,7 +33,7 @@ from wbtc.errors import WbtcError
 from wbtc.runtime import poses, scene_ops
 from wbtc.runtime.rebuild import swap_model
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, to_typed
-from wbtc.runtime.simulation import RobotState, Simulation
+from wbtc.runtime.simulation import RobotState, Simulation, descends
 from wbtc.scene.model import Node, Scene
 
 _POSE_FIELDS = ("translation", "rotation")
@@ -157,7 +157,7 @@ class SupervisorHub:
             contact = sim.data.contact[i]
             for geom in (contact.geom1, contact.geom2):
                 b = int(sim.model.geom_bodyid[geom])
-                if b == body or (descendants and poses._descends(sim.model, b, body)):
+                if b == body or (descendants and descends(sim.model, b, body)):
                     owner = owners.get(b, node)
                     points.append(([float(v) for v in sim.from_model @ contact.pos], self.tree.node_id(owner)))
                     break
