@@ -156,3 +156,18 @@ def test_labels_reach_the_viewer_overlay(hub):
     viewer = Viewer()
     assert _sync(viewer, hub.sim)
     assert viewer.texts == (None, int(mujoco.mjtGridPos.mjGRID_TOPLEFT), "Key 315\nFrame: 7th", "")
+
+
+def test_proto_internals_through_base_fields_and_proto_defs(hub):
+    hub, referee = hub
+    driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
+    # getField of a PROTO instance is an interface field; getBaseNodeField a field of the Robot it expands to.
+    interface = hub.call(referee, "node.getField", (driver["id"], "controller", False))
+    assert hub.call(referee, "field.get", (interface["id"], -1)) == "drive"
+    assert hub.call(referee, "node.getField", (driver["id"], "children", False)) is None
+    children = hub.call(referee, "node.getField", (driver["id"], "children", True))
+    assert children["type"] == 0x19 and children["count"] > 5
+    # A DEF inside the PROTO is hidden from getFromDef but reached from the instance (getFromProtoDef).
+    assert hub.call(referee, "getFromDef", ("EPUCK_COLUMN", -1)) is None
+    column = hub.call(referee, "getFromDef", ("EPUCK_COLUMN", driver["id"]))
+    assert column is not None and column["def"] == "EPUCK_COLUMN"
