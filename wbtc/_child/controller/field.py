@@ -9,128 +9,60 @@ Python type (``bool``, ``int``, ``float``, ``str``, or a ``list`` of the right l
 ``Error: new field value has wrong type or length.``; the C library's checks (field type, index bounds, NaN and
 FLT_MAX, rotation axis, colour range, read-only PROTO internal fields) print its messages. As in Webots' Python
 package, ``getSFFloat()`` and its siblings return the field's value whatever its SF type.
+
+The type constants, value checks and conversions live in ``_field_values``; the MF item accessors (``getMF*``,
+``setMF*``, ``insertMF*``, ``removeMF``, ``importMFNodeFromString``) in ``_field_mf``, whose ``MFItems`` ``Field``
+inherits.
 """
 
 from __future__ import annotations
 
-import math
 import operator
 from typing import TYPE_CHECKING, Any
 
 from . import _session
+from ._field_mf import MFItems
+from ._field_values import (
+    FLT_MAX,  # noqa: F401 (re-exported)
+    MF,
+    MF_BOOL,
+    MF_COLOR,
+    MF_FLOAT,
+    MF_INT32,
+    MF_NODE,
+    MF_ROTATION,
+    MF_STRING,
+    MF_VEC2F,
+    MF_VEC3F,
+    SF_BOOL,
+    SF_COLOR,
+    SF_FLOAT,
+    SF_INT32,
+    SF_NODE,
+    SF_ROTATION,
+    SF_STRING,
+    SF_VEC2F,
+    SF_VEC3F,
+    SIZES,
+    TYPE_NAMES,
+    check_float,  # noqa: F401 (re-exported)
+    check_vector,  # noqa: F401 (re-exported)
+    to_double,  # noqa: F401 (re-exported)
+    to_doubles,
+    to_str,
+    valid_item,
+)
 
 if TYPE_CHECKING:
     from .node import Node
 
 ROBOT_TAG = _session.ROBOT_TAG
 NAN = _session.NAN
-FLT_MAX = 3.4028234663852886e38
-
-SF_BOOL = 0x01
-SF_INT32 = 0x02
-SF_FLOAT = 0x03
-SF_VEC2F = 0x04
-SF_VEC3F = 0x05
-SF_ROTATION = 0x06
-SF_COLOR = 0x07
-SF_STRING = 0x08
-SF_NODE = 0x09
-MF = 0x10
-MF_BOOL = 0x11
-MF_INT32 = 0x12
-MF_FLOAT = 0x13
-MF_VEC2F = 0x14
-MF_VEC3F = 0x15
-MF_ROTATION = 0x16
-MF_COLOR = 0x17
-MF_STRING = 0x18
-MF_NODE = 0x19
-
-TYPE_NAMES: dict[int, str] = {
-    SF_BOOL: "SFBool", SF_INT32: "SFInt32", SF_FLOAT: "SFFloat", SF_VEC2F: "SFVec2f", SF_VEC3F: "SFVec3f",
-    SF_ROTATION: "SFRotation", SF_COLOR: "SFColor", SF_STRING: "SFString", SF_NODE: "SFNode",
-    MF_BOOL: "MFBool", MF_INT32: "MFInt32", MF_FLOAT: "MFFloat", MF_VEC2F: "MFVec2f", MF_VEC3F: "MFVec3f",
-    MF_ROTATION: "MFRotation", MF_COLOR: "MFColor", MF_STRING: "MFString", MF_NODE: "MFNode",
-}
-
-#: Vector sizes of the float-vector types.
-_SIZES = {SF_VEC2F: 2, SF_VEC3F: 3, SF_ROTATION: 4, SF_COLOR: 3, MF_VEC2F: 2, MF_VEC3F: 3, MF_ROTATION: 4, MF_COLOR: 3}
 
 _error = _session.error
 
 
-# -- value checks shared with node.py -----------------------------------------------------------------------------
-def check_float(function: str, value: float) -> bool:
-    """Webots' ``check_float``: NaN and values beyond FLT_MAX are refused with its message."""
-    if math.isnan(value):
-        _error(f"Error: {function}() called with a NaN value.")
-        return False
-    if value > FLT_MAX:
-        _error(f"Error: {function}() called with a value greater than FLX_MAX: {value:g} > {FLT_MAX:g}.")
-        return False
-    if value < -FLT_MAX:
-        _error(f"Error: {function}() called with a value smaller than -FLX_MAX): {value:g} < {-FLT_MAX:g}.")
-        return False
-    return True
-
-
-def check_vector(function: str, values: list[float]) -> bool:
-    """Webots' ``check_vector``: every item passes ``check_float``."""
-    return all(check_float(function, v) for v in values)
-
-
-def to_doubles(values: Any, size: int) -> list[float]:
-    """What ``(ctypes.c_double * size)(*values)`` makes of ``values`` in Webots' Python package.
-
-    Missing items are 0.0; too many raise IndexError and non-numbers TypeError, as ctypes does.
-    """
-    items = list(values)
-    if len(items) > size:
-        raise IndexError("invalid index")
-    doubles = []
-    for item in items:
-        if isinstance(item, (str, bytes)) or not isinstance(item, (int, float)):
-            raise TypeError(f"must be real number, not {type(item).__name__}")
-        doubles.append(float(item))
-    return doubles + [0.0] * (size - len(doubles))
-
-
-def to_double(value: Any) -> float:
-    """What ``ctypes.c_double(value)`` accepts: a real number."""
-    if isinstance(value, (str, bytes)) or not isinstance(value, (int, float)):
-        raise TypeError(f"must be real number, not {type(value).__name__}")
-    return float(value)
-
-
-def _to_int(value: Any, position: int) -> int:
-    """A Python int as ctypes passes it to an ``int`` parameter (anything else is refused)."""
-    if not isinstance(value, int):
-        raise TypeError(f"argument {position}: Don't know how to convert parameter {position}")
-    return int(value)
-
-
-def _to_str(value: Any) -> str:
-    """What ``str.encode(value)`` accepts: a str."""
-    if not isinstance(value, str):
-        raise TypeError(f"descriptor 'encode' for 'str' objects doesn't apply to a '{type(value).__name__}' object")
-    return value
-
-
-def _valid_rotation(function: str, values: list[float]) -> bool:
-    if values[0] == 0.0 and values[1] == 0.0 and values[2] == 0.0:
-        _error(f"Error: {function}() called with invalid values for the [x y z] axis.")
-        return False
-    return True
-
-
-def _valid_color(function: str, values: list[float]) -> bool:
-    if not all(0.0 <= v <= 1.0 for v in values):
-        _error(f"Error: {function}() called with invalid RGB values (outside [0,1] range).")
-        return False
-    return True
-
-
-class Field:
+class Field(MFItems):
     """A field of a node (or of a PROTO's base node); ``Node.getField()`` gives the one object per field."""
 
     SF_BOOL = SF_BOOL
@@ -223,7 +155,7 @@ class Field:
         """The number of items of an MF field; -1 for an SF field."""
         return self._current_count() if self.type & MF else -1
 
-    # -- plumbing ----------------------------------------------------------------------------------------------
+    # -- plumbing ---------------------------------------------------------------------------------------------
     def _current_count(self) -> int:
         session = _session.require()
         if self._count_epoch != session.epoch:
@@ -295,7 +227,7 @@ class Field:
 
         return Node._from_ref(ref, internal=self._read_only)
 
-    # -- SF values ---------------------------------------------------------------------------------------------
+    # -- SF values --------------------------------------------------------------------------------------------
     @property
     def value(self) -> Any:
         """The value of an SF field (None for an MF field); setting it checks the Python type strictly."""
@@ -315,7 +247,7 @@ class Field:
         if kind in (SF_VEC2F, SF_VEC3F, SF_ROTATION, SF_COLOR):
             function = "wb_supervisor_field_get_sf_" + TYPE_NAMES[kind][2:].lower()
             result = self._get(function, -1)
-            size = _SIZES[kind]
+            size = SIZES[kind]
             return [float(v) for v in result[:size]] if result is not None else [NAN] * size
         if kind == SF_NODE:
             return self.getSFNode()
@@ -332,8 +264,8 @@ class Field:
             self._set_sf("wb_supervisor_field_set_sf_float", value)
         elif kind == SF_STRING and isinstance(value, str):
             self._set_sf("wb_supervisor_field_set_sf_string", value)
-        elif kind in _SIZES and not kind & MF and isinstance(value, list) and len(value) == _SIZES[kind]:
-            doubles = to_doubles(value, _SIZES[kind])
+        elif kind in SIZES and not kind & MF and isinstance(value, list) and len(value) == SIZES[kind]:
+            doubles = to_doubles(value, SIZES[kind])
             self._set_sf("wb_supervisor_field_set_sf_" + TYPE_NAMES[kind][2:].lower(), doubles)
         else:
             _error("Error: new field value has wrong type or length.")
@@ -345,19 +277,7 @@ class Field:
             return
         self._set(function, -1, value)
 
-    @staticmethod
-    def _valid_item(function: str, kind: int, value: Any) -> bool:
-        """The C library's checks on a value of an SF type or an MF item."""
-        base = kind & ~MF
-        if base == SF_FLOAT:
-            return check_float(function, value)
-        if base in (SF_VEC2F, SF_VEC3F):
-            return check_vector(function, value)
-        if base == SF_ROTATION:
-            return check_vector(function, value) and _valid_rotation(function, value)
-        if base == SF_COLOR:
-            return _valid_color(function, value)
-        return True
+    _valid_item = staticmethod(valid_item)
 
     def getSFBool(self) -> bool:
         """The value of the field (Webots' Python package returns ``value`` whatever the SF type)."""
@@ -442,176 +362,7 @@ class Field:
         """Set the value (sent with the next step)."""
         self.value = value
 
-    # -- MF items ----------------------------------------------------------------------------------------------
-    def _get_mf(self, suffix: str, kind: int, index: int) -> tuple[bool, Any]:
-        function = f"wb_supervisor_field_get_mf_{suffix}"
-        resolved = self._check(function, kind, index)
-        if resolved is None:
-            return False, None
-        return True, self._get(function, resolved)
-
-    def _get_mf_vector(self, suffix: str, kind: int, index: int) -> list[float]:
-        ok, result = self._get_mf(suffix, kind, index)
-        if not ok:
-            raise ValueError("NULL pointer access")  # what Webots' Python package hits after the C error
-        size = _SIZES[kind]
-        return [float(v) for v in result[:size]] if result is not None else [NAN] * size
-
-    def getMFBool(self, index: int) -> bool:
-        """Item ``index`` (negative: from the end)."""
-        return bool(self._get_mf("bool", MF_BOOL, index)[1])
-
-    def getMFInt32(self, index: int) -> int:
-        """Item ``index`` (negative: from the end)."""
-        result = self._get_mf("int32", MF_INT32, index)[1]
-        return int(result) if result is not None else 0
-
-    def getMFFloat(self, index: int) -> float:
-        """Item ``index`` (negative: from the end)."""
-        result = self._get_mf("float", MF_FLOAT, index)[1]
-        return float(result) if result is not None else 0.0
-
-    def getMFString(self, index: int) -> str:
-        """Item ``index`` (negative: from the end)."""
-        result = self._get_mf("string", MF_STRING, index)[1]
-        return str(result) if result is not None else ""
-
-    def getMFVec2f(self, index: int) -> list[float]:
-        """Item ``index`` (negative: from the end)."""
-        return self._get_mf_vector("vec2f", MF_VEC2F, index)
-
-    def getMFVec3f(self, index: int) -> list[float]:
-        """Item ``index`` (negative: from the end)."""
-        return self._get_mf_vector("vec3f", MF_VEC3F, index)
-
-    def getMFRotation(self, index: int) -> list[float]:
-        """Item ``index`` (negative: from the end)."""
-        return self._get_mf_vector("rotation", MF_ROTATION, index)
-
-    def getMFColor(self, index: int) -> list[float]:
-        """Item ``index`` (negative: from the end)."""
-        return self._get_mf_vector("color", MF_COLOR, index)
-
-    def getMFNode(self, index: int) -> Node | None:
-        """Node ``index`` (negative: from the end), or None."""
-        return self._node(self._get_mf("node", MF_NODE, index)[1])
-
-    def _set_mf(self, suffix: str, kind: int, index: int, value: Any) -> None:
-        function = f"wb_supervisor_field_set_mf_{suffix}"
-        resolved = self._check(function, kind, index, writing=True)
-        if resolved is None or not self._valid_item(function, kind, value):
-            return
-        self._set(function, resolved, value)
-
-    def setMFBool(self, index: int, value: bool) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("bool", MF_BOOL, index, bool(value))
-
-    def setMFInt32(self, index: int, value: int) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("int32", MF_INT32, index, _to_int(value, 3))
-
-    def setMFFloat(self, index: int, value: float) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("float", MF_FLOAT, index, to_double(value))
-
-    def setMFVec2f(self, index: int, value: list[float]) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("vec2f", MF_VEC2F, index, to_doubles(value, 2))
-
-    def setMFVec3f(self, index: int, value: list[float]) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("vec3f", MF_VEC3F, index, to_doubles(value, 3))
-
-    def setMFRotation(self, index: int, value: list[float]) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("rotation", MF_ROTATION, index, to_doubles(value, 4))
-
-    def setMFColor(self, index: int, value: list[float]) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("color", MF_COLOR, index, to_doubles(value, 3))
-
-    def setMFString(self, index: int, value: str) -> None:
-        """Set item ``index`` (sent with the next step)."""
-        self._set_mf("string", MF_STRING, index, _to_str(value))
-
-    def _insert_mf(self, suffix: str, kind: int, index: int, value: Any) -> None:
-        function = f"wb_supervisor_field_insert_mf_{suffix}"
-        resolved = self._check(function, kind, index, importing=True, writing=True)
-        if resolved is None or not self._valid_item(function, kind, value):
-            return
-        self._count += 1
-        self._immediate(function, "field.insert", resolved, value)
-
-    def insertMFBool(self, index: int, value: bool) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("bool", MF_BOOL, index, bool(value))
-
-    def insertMFInt32(self, index: int, value: int) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("int32", MF_INT32, index, _to_int(value, 3))
-
-    def insertMFFloat(self, index: int, value: float) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("float", MF_FLOAT, index, to_double(value))
-
-    def insertMFVec2f(self, index: int, value: list[float]) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("vec2f", MF_VEC2F, index, to_doubles(value, 2))
-
-    def insertMFVec3f(self, index: int, value: list[float]) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("vec3f", MF_VEC3F, index, to_doubles(value, 3))
-
-    def insertMFRotation(self, index: int, value: list[float]) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("rotation", MF_ROTATION, index, to_doubles(value, 4))
-
-    def insertMFColor(self, index: int, value: list[float]) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("color", MF_COLOR, index, to_doubles(value, 3))
-
-    def insertMFString(self, index: int, value: str) -> None:
-        """Insert an item before ``index`` (``count`` or -1: at the end)."""
-        self._insert_mf("string", MF_STRING, index, _to_str(value))
-
-    def removeMF(self, index: int) -> None:
-        """Remove item ``index`` of an MF field (negative: from the end)."""
-        function = "wb_supervisor_field_remove_mf"
-        if self.type & MF and self._current_count() == 0:
-            _error(f"Error: {function}() called for an empty field.")
-            return
-        resolved = self._check(function, MF, index, check_type=False, writing=True)
-        if resolved is None:
-            return
-        self._count -= 1
-        self._immediate(function, "field.remove", resolved)
-
-    # -- nodes -------------------------------------------------------------------------------------------------
-    def importMFNodeFromString(self, position: int, nodeString: str) -> None:
-        """Insert the node described in VRML by ``nodeString`` before ``position`` (-1: at the end)."""
-        function = "wb_supervisor_field_import_mf_node_from_string"
-        if not self._writable(function):
-            return
-        if self.type != MF_NODE:
-            _error(f"Error: {function}() called with a wrong field type: {self.type_name}.")
-            return
-        if not nodeString:
-            _error(f"Error: {function}() called with a NULL or empty 'node_string' argument.")
-            return
-        position = operator.index(position)
-        count = self._current_count()
-        if position < -(count + 1) or position > count:
-            _error(
-                f"Error: {function}() called with an out-of-bound index: {position} (should be between "
-                f"{-(count + 1)} and {count})."
-            )
-            return
-        if position < 0:
-            position = count + position + 1
-        self._count += 1
-        self._immediate(function, "field.importMFNode", position, _to_str(nodeString))
-
+    # -- SF nodes (MF nodes: MFItems.importMFNodeFromString) --------------------------------------------------
     def importSFNodeFromString(self, nodeString: str) -> None:
         """Put the node described in VRML by ``nodeString`` into an empty SFNode field."""
         function = "wb_supervisor_field_import_sf_node_from_string"
@@ -626,7 +377,7 @@ class Field:
         if self._get(function, -1) is not None:
             _error(f"Error: {function}() called with a non-empty field.")
             return
-        self._immediate(function, "field.importSFNode", _to_str(nodeString))
+        self._immediate(function, "field.importSFNode", to_str(nodeString))
 
     def removeSF(self) -> None:
         """Remove the node of an SFNode field."""

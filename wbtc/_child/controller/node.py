@@ -2,7 +2,8 @@
 
 There is one ``Node`` object per node id in a controller process, so ``supervisor.getFromDef("A") is
 supervisor.getFromId(a_id)`` holds. Queries are synchronous calls to the simulator; physics commands (forces,
-velocities, resets) are buffered and leave with the next step; ``remove()`` is immediate, as in Webots.
+velocities, resets) are buffered and leave with the next step; ``remove()`` is immediate, as in Webots. The pose,
+physics state and contact point getters live in ``_node_state``, whose ``NodeState`` ``Node`` inherits.
 """
 
 from __future__ import annotations
@@ -10,36 +11,18 @@ from __future__ import annotations
 from typing import Any
 
 from . import _session
+from ._field_values import check_vector, to_doubles
+from ._node_state import NodeState
 from .constants import NODE_TYPE_NAMES, node_constant_name, node_type
-from .contact_point import ContactPoint
-from .field import Field, check_vector, to_doubles
+from .field import Field
 
 ROBOT_TAG = _session.ROBOT_TAG
 NAN = _session.NAN
 
 _error = _session.error
-_warned: set[str] = set()
 
 
-def _deprecated(function: str, replacement: str) -> None:
-    """Webots' once-per-process deprecation warning of the C library."""
-    if function not in _warned:
-        _warned.add(function)
-        _error(f"Warning: {function}() is deprecated, use {replacement}() instead.")
-
-
-def _nans(size: int) -> list[float]:
-    return [NAN] * size
-
-
-def _floats(values: Any, size: int) -> list[float]:
-    """A simulator answer as a list of ``size`` floats (NaN when there is none, as Webots' invalid vector)."""
-    if values is None:
-        return _nans(size)
-    return [float(v) for v in list(values)[:size]]
-
-
-class Node:
+class Node(NodeState):
     """A scene-tree node; the constants (``Node.ROBOT``, ``Node.SOLID``...) are Webots' ``WB_NODE_*`` values."""
 
     NO_NODE = 0  # the other WB_NODE_* constants are set below, from constants.NODE_TYPE_NAMES
@@ -250,120 +233,6 @@ class Node:
     def number_of_base_node_fields(self) -> int:
         """The number of fields of the PROTO's base node."""
         return self.getNumberOfBaseNodeFields()
-
-    # -- pose and physics state --------------------------------------------------------------------------------
-    def _vector(self, op: str, size: int, function: str, *args: Any) -> list[float]:
-        if not self._ok(function):
-            return _nans(size)
-        return _floats(self._call(op, *args, function=function), size)
-
-    def getPosition(self) -> list[float]:
-        """The node's position in world coordinates (NaN for a node without a pose)."""
-        return self._vector("node.getPosition", 3, "wb_supervisor_node_get_position")
-
-    def getOrientation(self) -> list[float]:
-        """The node's world rotation matrix, 9 numbers row by row."""
-        return self._vector("node.getOrientation", 9, "wb_supervisor_node_get_orientation")
-
-    def getPose(self, fromNode: Node | None = None) -> list[float]:
-        """The node's 4x4 homogeneous transform (16 numbers row by row) relative to ``fromNode`` or the world."""
-        function = "wb_supervisor_node_get_pose"
-        if fromNode is not None and not fromNode._valid:
-            _error(f"Error: {function}() called with a NULL or invalid 'from_node' argument.")
-            return _nans(16)
-        from_id = fromNode._id if fromNode is not None else -1
-        return self._vector("node.getPose", 16, function, from_id)
-
-    def enablePoseTracking(self, samplingPeriod: int, fromNode: Node | None = None) -> None:
-        """Webots streams the pose every period; wbtc asks afresh at each ``getPose``, so only the checks remain."""
-        function = "wb_supervisor_node_enable_pose_tracking"
-        if samplingPeriod < 0:
-            _error(f"Error: {function}() called with negative sampling period.")
-            return
-        if fromNode is not None and not fromNode._valid:
-            _error(f"Error: {function}() called with a NULL or invalid 'from_node' argument.")
-            return
-        self._ok(function)
-
-    def disablePoseTracking(self, fromNode: Node | None = None) -> None:
-        """Stop the pose tracking (nothing to stop in wbtc)."""
-        self._ok("wb_supervisor_node_disable_pose_tracking")
-
-    def getCenterOfMass(self) -> list[float]:
-        """The centre of mass of a solid in world coordinates (NaN for other nodes)."""
-        return self._vector("node.getCenterOfMass", 3, "wb_supervisor_node_get_center_of_mass")
-
-    def getVelocity(self) -> list[float]:
-        """The solid's linear and angular velocity, 6 numbers (NaN for other nodes)."""
-        return self._vector("node.getVelocity", 6, "wb_supervisor_node_get_velocity")
-
-    def getStaticBalance(self) -> bool:
-        """Whether the centre of mass of a top solid projects inside its support polygon."""
-        function = "wb_supervisor_node_get_static_balance"
-        if not self._ok(function):
-            return False
-        return bool(self._call("node.getStaticBalance", function=function, default=False))
-
-    def getContactPoints(self, includeDescendants: bool = False) -> list[ContactPoint]:
-        """The contact points of a solid (and of its descendant solids when asked)."""
-        function = "wb_supervisor_node_get_contact_points"
-        if not self._ok(function):
-            return []
-        points = self._call("node.getContactPoints", bool(includeDescendants), function=function) or []
-        return [ContactPoint((*point, node_id)) for point, node_id in points]
-
-    def getNumberOfContactPoints(self, includeDescendants: bool = False) -> int:
-        """Deprecated in Webots: ``len(getContactPoints(includeDescendants))``."""
-        function = "wb_supervisor_node_get_number_of_contact_points"
-        _deprecated(function, "wb_supervisor_node_get_contact_points")
-        if not self._ok(function):
-            return -1
-        self._descendants = bool(includeDescendants)
-        return len(self.getContactPoints(includeDescendants))
-
-    def getContactPoint(self, index: int) -> list[float]:
-        """Deprecated in Webots: the position of contact point ``index`` (NaN when there is none)."""
-        function = "wb_supervisor_node_get_contact_point"
-        _deprecated(function, "wb_supervisor_node_get_contact_points")
-        if not self._ok(function):
-            return _nans(3)
-        points = self.getContactPoints(self._descendants)
-        return list(points[index].point) if 0 <= index < len(points) else _nans(3)
-
-    def getContactPointNode(self, index: int) -> Node | None:
-        """Deprecated in Webots: the node in contact at contact point ``index``, or None."""
-        function = "wb_supervisor_node_get_contact_point_node"
-        _deprecated(function, "wb_supervisor_node_get_contact_points")
-        if not self._ok(function):
-            return None
-        points = self.getContactPoints(self._descendants)
-        return _from_id(points[index].node_id, function) if 0 <= index < len(points) else None
-
-    def enableContactPointsTracking(self, samplingPeriod: int, includeDescendants: bool = False) -> None:
-        """Webots streams contact points every period; wbtc asks afresh, so only the checks remain."""
-        function = "wb_supervisor_node_enable_contact_points_tracking"
-        if samplingPeriod < 0:
-            _error(f"Error: {function}() called with negative sampling period.")
-            return
-        self._ok(function)
-
-    def disableContactPointsTracking(self, includeDescendants: bool = False) -> None:
-        """Stop the contact points tracking (nothing to stop in wbtc)."""
-        self._ok("wb_supervisor_node_disable_contact_points_tracking")
-
-    def enableContactPointTracking(self, samplingPeriod: int, includeDescendants: bool = False) -> None:
-        """Deprecated spelling of ``enableContactPointsTracking``."""
-        _deprecated(
-            "wb_supervisor_node_enable_contact_point_tracking", "wb_supervisor_node_enable_contact_points_tracking"
-        )
-        self.enableContactPointsTracking(samplingPeriod, includeDescendants)
-
-    def disableContactPointTracking(self, includeDescendants: bool = False) -> None:
-        """Deprecated spelling of ``disableContactPointsTracking``."""
-        _deprecated(
-            "wb_supervisor_node_disable_contact_point_tracking", "wb_supervisor_node_disable_contact_points_tracking"
-        )
-        self.disableContactPointsTracking()
 
     # -- commands ----------------------------------------------------------------------------------------------
     def setVelocity(self, velocity: list[float]) -> None:
