@@ -94,7 +94,7 @@ def main() -> None:
         folder = Path(tmp)
         (folder / "bench.wbt").write_text(WORLD, encoding="utf-8")
         shutil.copy(LESSON, folder / LESSON.name)
-        wall, simulated = run_wbtc(folder, seconds)
+        wall, simulated = min(run_wbtc(folder, seconds) for _ in range(3))  # best of 3, like the bare loop
         bare = min(run_bare(folder, seconds) for _ in range(3))
     factor = simulated / wall
     print(f"wbtc run, Example 4, e-puck + 5 boxes: {simulated:.1f} s simulated in {wall:.3f} s wall")

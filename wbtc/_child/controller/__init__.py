@@ -6,48 +6,37 @@ controller, one given ``WBTC_CONTROLLER_URL``); ``wire.py`` describes the protoc
 Supervisor controllers use ``Supervisor`` (a ``Robot``), ``Node``, ``Field`` and ``ContactPoint``.
 """
 
-from .accelerometer import Accelerometer
-from .altimeter import Altimeter
-from .ansi_codes import AnsiCodes
-from .brake import Brake
-from .camera import Camera, CameraRecognitionObject
-from .compass import Compass
-from .connector import Connector
-from .contact_point import ContactPoint
-from .display import Display
-from .distance_sensor import DistanceSensor
-from .emitter import Emitter
-from .field import Field
-from .gps import GPS
-from .gyro import Gyro
-from .inertial_unit import InertialUnit
-from .joystick import Joystick
-from .keyboard import Keyboard
-from .led import LED
-from .lidar import Lidar
-from .lidar_point import LidarPoint
-from .light_sensor import LightSensor
-from .motion import Motion
-from .motor import Motor
-from .mouse import Mouse, MouseState
-from .node import Node
-from .pen import Pen
-from .position_sensor import PositionSensor
-from .radar import Radar
-from .radar_target import RadarTarget
-from .range_finder import RangeFinder
-from .receiver import Receiver
-from .robot import Robot
-from .skin import Skin
-from .speaker import Speaker
-from .supervisor import Supervisor
-from .touch_sensor import TouchSensor
-from .vacuum_gripper import VacuumGripper
+import importlib
+from typing import Any
 
-__all__ = [
-    "Accelerometer", "Altimeter", "AnsiCodes", "Brake", "Camera", "CameraRecognitionObject", "Compass", "Connector",
-    "ContactPoint", "Display", "DistanceSensor", "Emitter", "Field", "GPS", "Gyro", "InertialUnit", "Joystick",
-    "Keyboard", "LED", "Lidar", "LidarPoint", "LightSensor", "Motion", "Motor", "Mouse", "MouseState", "Node", "Pen",
-    "PositionSensor", "Radar", "RadarTarget", "RangeFinder", "Receiver", "Robot", "Skin", "Speaker", "Supervisor",
-    "TouchSensor", "VacuumGripper",
-]
+from .robot import Robot  # noqa: F401 (the one class every controller needs: loaded at once)
+
+#: Public name -> the module defining it. Loaded on first use (``from controller import Camera`` or a
+#: robot having a camera), so that starting a controller does not import every device class.
+_MODULES = {
+    "Accelerometer": "accelerometer", "Altimeter": "altimeter", "AnsiCodes": "ansi_codes", "Brake": "brake",
+    "Camera": "camera", "CameraRecognitionObject": "camera", "Compass": "compass", "Connector": "connector",
+    "ContactPoint": "contact_point", "Display": "display", "DistanceSensor": "distance_sensor", "Emitter": "emitter",
+    "Field": "field", "GPS": "gps", "Gyro": "gyro", "InertialUnit": "inertial_unit", "Joystick": "joystick",
+    "Keyboard": "keyboard", "LED": "led", "Lidar": "lidar", "LidarPoint": "lidar_point", "LightSensor": "light_sensor",
+    "Motion": "motion", "Motor": "motor", "Mouse": "mouse", "MouseState": "mouse", "Node": "node", "Pen": "pen",
+    "PositionSensor": "position_sensor", "Radar": "radar", "RadarTarget": "radar_target",
+    "RangeFinder": "range_finder", "Receiver": "receiver", "Skin": "skin", "Speaker": "speaker",
+    "Supervisor": "supervisor", "TouchSensor": "touch_sensor", "VacuumGripper": "vacuum_gripper",
+}
+
+__all__ = sorted([*_MODULES, "Robot"])
+
+
+def __getattr__(name: str) -> Any:
+    """Import a public class on first use (PEP 562)."""
+    module = _MODULES.get(name)
+    if module is None:
+        raise AttributeError(f"module 'controller' has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return __all__

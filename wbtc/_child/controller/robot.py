@@ -2,51 +2,42 @@
 
 from __future__ import annotations
 
+import importlib
 import sys
 import time as _time
 from typing import Any
 
 from . import _session
-from .accelerometer import Accelerometer
-from .altimeter import Altimeter
-from .brake import Brake
-from .camera import Camera
-from .compass import Compass
-from .connector import Connector
 from .constants import node_type
 from .device import Device
-from .display import Display
-from .distance_sensor import DistanceSensor
-from .emitter import Emitter
-from .gps import GPS
-from .gyro import Gyro
-from .inertial_unit import InertialUnit
 from .joystick import Joystick
 from .keyboard import Keyboard
-from .led import LED
-from .lidar import Lidar
-from .light_sensor import LightSensor
-from .motor import Motor
 from .mouse import Mouse
-from .pen import Pen
-from .position_sensor import PositionSensor
-from .radar import Radar
-from .range_finder import RangeFinder
-from .receiver import Receiver
-from .skin import Skin
-from .speaker import Speaker
-from .touch_sensor import TouchSensor
-from .vacuum_gripper import VacuumGripper
 
-#: Webots base node type name -> device class, as ``Robot()`` builds its device table.
-DEVICE_CLASSES: dict[str, type[Device]] = {
-    "Accelerometer": Accelerometer, "Altimeter": Altimeter, "Brake": Brake, "Camera": Camera, "Compass": Compass,
-    "Connector": Connector, "Display": Display, "DistanceSensor": DistanceSensor, "Emitter": Emitter, "GPS": GPS,
-    "Gyro": Gyro, "InertialUnit": InertialUnit, "LED": LED, "Lidar": Lidar, "LightSensor": LightSensor,
-    "LinearMotor": Motor, "RotationalMotor": Motor, "Pen": Pen, "PositionSensor": PositionSensor, "Radar": Radar,
-    "RangeFinder": RangeFinder, "Receiver": Receiver, "Skin": Skin, "Speaker": Speaker, "TouchSensor": TouchSensor,
-    "VacuumGripper": VacuumGripper,
+#: Webots base node type name -> (module, class) of its device class. Imported when a robot has such a
+#: device, so that a controller starts without loading the classes of devices it does not have.
+DEVICE_CLASSES: dict[str, tuple[str, str]] = {
+    "Accelerometer": ("accelerometer", "Accelerometer"), "Altimeter": ("altimeter", "Altimeter"),
+    "Brake": ("brake", "Brake"), "Camera": ("camera", "Camera"), "Compass": ("compass", "Compass"),
+    "Connector": ("connector", "Connector"), "Display": ("display", "Display"),
+    "DistanceSensor": ("distance_sensor", "DistanceSensor"), "Emitter": ("emitter", "Emitter"), "GPS": ("gps", "GPS"),
+    "Gyro": ("gyro", "Gyro"), "InertialUnit": ("inertial_unit", "InertialUnit"), "LED": ("led", "LED"),
+    "Lidar": ("lidar", "Lidar"), "LightSensor": ("light_sensor", "LightSensor"), "LinearMotor": ("motor", "Motor"),
+    "RotationalMotor": ("motor", "Motor"), "Pen": ("pen", "Pen"),
+    "PositionSensor": ("position_sensor", "PositionSensor"),
+    "Radar": ("radar", "Radar"), "RangeFinder": ("range_finder", "RangeFinder"), "Receiver": ("receiver", "Receiver"),
+    "Skin": ("skin", "Skin"), "Speaker": ("speaker", "Speaker"), "TouchSensor": ("touch_sensor", "TouchSensor"),
+    "VacuumGripper": ("vacuum_gripper", "VacuumGripper"),
 }
+
+
+def device_class(type_name: str) -> type[Device] | None:
+    """The controller class of a Webots device type (None when wbtc has none)."""
+    where = DEVICE_CLASSES.get(type_name)
+    if where is None:
+        return None
+    module = importlib.import_module(f".{where[0]}", __package__)
+    return getattr(module, where[1])
 
 
 def _deprecated(method: str) -> Any:
@@ -86,7 +77,7 @@ class Robot:
         session = _session.start()
         classes = {}
         for state in session.states:
-            cls = DEVICE_CLASSES.get(state.type)
+            cls = device_class(state.type)
             if cls is None:
                 kind = node_type(state.type) or state.type
                 print(f'Unsupported device type: {kind} for device named "{state.name}"', file=sys.stderr)
