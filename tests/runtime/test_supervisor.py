@@ -76,10 +76,10 @@ def test_simulation_reset_restores_poses_and_time(tmp_path):
     assert float(reset.group(1)) == pytest.approx(0.016)
     assert [float(v) for v in reset.group(2).split(",")] == pytest.approx([1, 1, 0.05], abs=1e-9)
     assert [float(v) for v in reset.group(3).split(",")][:2] == pytest.approx([-3, -3], abs=2e-3)
-    # Time went back to 0 and the run lasts until the clock reads 1.5 s again; the driver's controller was
-    # restarted, so it drove 1.5 s at 6.28 rad/s on 0.02 m wheels from its start pose.
-    assert data["sim_time"] == pytest.approx(1.5, abs=0.016)
-    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 1.5, abs=0.01)
+    # Time went back to 0 at 1.008 s and --duration counts all simulated time: the clock ends at about
+    # 0.5 s. The driver's controller was restarted, so it drove 0.5 s at 6.28 rad/s on 0.02 m wheels.
+    assert data["sim_time"] == pytest.approx(1.5 - 1.008, abs=0.016)
+    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 0.5, abs=0.01)
 
 
 def test_movie_recording_from_a_supervisor(tmp_path):
@@ -100,3 +100,12 @@ def test_movie_recording_from_a_supervisor(tmp_path):
     assert red.sum() >= 20
     with Image.open(tmp_path / "shot.jpg") as shot:  # exportImage: the Viewpoint's view as a JPEG
         assert (shot.format, shot.size) == ("JPEG", (640, 480))
+
+
+def test_world_reload_restarts_every_controller(tmp_path):
+    code, data, output = _run(_world(tmp_path, "reload"), "--duration", "1")
+    assert code == 0, output
+    # Reloaded at 0.512 s: the referee starts over at time 0, its first step answered at 0.016 s.
+    assert "[referee] after reload 0.016 [1.0, 1.0, 0.05]" in output
+    # The driver's controller started over too: 1 - 0.512 s of driving at 6.28 rad/s on 0.02 m wheels.
+    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * (1 - 0.512), abs=0.01)

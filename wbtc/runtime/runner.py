@@ -171,7 +171,8 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
     last_progress = 0.0
     while sim.time_ms + 1e-9 < limit_ms:
         if hub is not None:
-            links = _flush(sim, world, hub, links)
+            links, shift = _flush(sim, world, hub, links)
+            limit_ms -= shift  # a reset moved the clock back: the run still lasts `duration` in all
             if hub.quit_status is not None:
                 reason = f"simulationQuit({hub.quit_status})"
                 break
@@ -215,8 +216,12 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
     return outcome
 
 
-def _flush(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) -> list[Link]:
-    """Apply the supervisors' queued writes; follow robots the world gained, lost or restarted."""
+def _flush(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) -> tuple[list[Link], float]:
+    """Apply the supervisors' queued writes; follow robots the world gained, lost or restarted.
+
+    Returns:
+        The links, and by how many ms a reset moved the clock back (0 without one).
+    """
     hub.flush()
     result = hub.take_changes()
     if result.time_shift:
@@ -230,7 +235,7 @@ def _flush(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) 
                 if link.process is not None and link.status == "running":
                     link.process.finish(timeout=0.0)
                 links[i] = start_link(sim, link.robot, world, hub)
-    return links
+    return links, result.time_shift
 
 
 def _follow_robots(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) -> list[Link]:

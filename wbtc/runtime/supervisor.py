@@ -10,9 +10,10 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
 - `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
   takes a node out; both recompile, and the runner starts or stops the robots' controllers;
 - `simulationReset` reloads the world file (time 0; controllers keep running, as in Webots);
+  `worldReload` does the same and restarts every controller, the calling supervisor's included;
   `simulationQuit(status)` ends the run with that exit code.
 
-Not honoured yet: `simulationSetMode` (recorded, the run goes on at full speed), `worldLoad`, movie
+Not honoured yet: `simulationSetMode` (recorded, the run goes on at full speed), `worldLoad` (another world), movie
 `width`/`height`/`codec`/`quality`/`acceleration`/`caption` (wbtc's own MP4/GIF settings are used),
 `worldSave`, `animationStartRecording`, pose and contact-point tracking (answered on demand).
 """
@@ -231,6 +232,9 @@ class SupervisorHub:
             self.quit_status = int(args[0])
         elif op == "simulationReset":
             outcome.reset = True
+        elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
+            outcome.reset = True
+            outcome.restart += list(sim.robots)
         elif op == "simulationResetPhysics":
             poses.reset_physics(sim, None)
         elif op == "simulationSetMode":
