@@ -3,8 +3,10 @@
 Each controller asks to step n ms; the simulator advances basic time steps until the earliest
 request is due, answers every controller whose time has come, and waits for their next requests.
 The run ends at `duration`, or (without one) when every controller has ended and the world is at
-rest, or after 60 simulated seconds; running controllers then get -1 from `step()` and one second
-to exit.
+rest, or after 60 simulated seconds (both counted over all simulated time, across a supervisor's
+resets), or at a supervisor's `simulationQuit`; running controllers then get -1 from `step()` and
+one second to exit. Supervisors' writes are applied before the world advances (see `supervisor`);
+robots the world gains get their controllers started, robots it loses have theirs stopped.
 """
 
 from __future__ import annotations
