@@ -106,3 +106,26 @@ def test_light_sensors_under_a_lamp_follow_the_cosine_law_plus_ambient(run):
     assert values["slant"] == pytest.approx([800 * math.cos(math.pi / 3) + 100], abs=0.5)
     assert values["side"] == pytest.approx([100.0], abs=0.5)
     assert values["down"] == pytest.approx([100.0], abs=0.5)
+
+
+def test_infra_red_emitters_and_receivers_need_each_other_in_their_cones():
+    from wbtc.pipeline import compile_world
+    from wbtc.runtime.devices import Emitter, Receiver
+    from wbtc.runtime.simulation import Simulation
+
+    result, _ = compile_world(Path(__file__).parent / "fixtures" / "ir_cone.wbt")
+    sim = Simulation(result, noise=False)
+    receivers = {}
+    for robot in sim.robots:
+        for sensor in robot.sensors.values():
+            if isinstance(sensor, Receiver):
+                sensor.enable(16, 0.0)
+                receivers[robot.entry.name] = sensor
+    emitter = next(e for r in sim.robots for e in r.emitters.values() if isinstance(e, Emitter))
+    sim.packets.append((emitter, b"hello"))
+    sim.step()
+    # "ahead" sits on the emitter's axis; "aside" is 90 degrees off its 0.5 rad cone; "looking away" is in
+    # the emitter's cone but faces away from it with a cone of its own.
+    # (Each receiver sampled at the end of that step: what it got is its value.)
+    assert [len(receivers[name].value) for name in ("ahead", "aside", "looking away")] == [1, 0, 0]
+    sim.close()

@@ -11,9 +11,10 @@
   Recognition node, `recognitionEnable(p)` adds `"objects"` to a sample every p ms (see `recognition`).
 - Emitter/Receiver: packets sent during a step reach the receivers on the same channel (−1 on
   either side: every channel) within `range` at the next basic step; radio ignores obstacles,
-  infra-red needs a line of sight. Receivers queue them until their next sample.
+  infra-red needs a line of sight and each end within the other's `aperture` cone. Receivers
+  queue them until their next sample.
 
-Not honoured yet: Emitter `aperture`, `baudRate`, `byteSize`, `bufferSize`; Receiver noise
+Not honoured yet: Emitter `baudRate`, `byteSize`, `bufferSize`; Receiver noise
 fields; Camera `exposure`, `noiseMaskUrl`, segmentation images (see `recognition` for the rest);
 serial emitters (treated as radio).
 """
@@ -224,6 +225,7 @@ class Receiver(Sensor):
         super().__init__(entry, sim, skip_bodies)
         self.channel = int(entry.fields.get("channel", 0))
         self.kind = str(entry.fields.get("type", "radio"))
+        self.aperture = float(entry.fields.get("aperture", -1))
         self.incoming: list[tuple] = []
 
     def sample(self, sim: Simulation) -> list[tuple]:
@@ -241,6 +243,14 @@ class Emitter:
         self.channel = int(entry.fields.get("channel", 0))
         self.range = float(entry.fields.get("range", -1))
         self.kind = str(entry.fields.get("type", "radio"))
+        self.aperture = float(entry.fields.get("aperture", -1))
+
+
+def _outside_cone(axis: np.ndarray, direction: np.ndarray, aperture: float) -> bool:
+    """True when `direction` leaves a cone of full angle `aperture` (-1: no cone) around `axis`."""
+    if aperture < 0:
+        return False
+    return float(np.dot(axis, direction)) < math.cos(aperture / 2.0) - 1e-12
 
 
 def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes]], receivers: list[Receiver]) -> None:
@@ -259,6 +269,12 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes]], receivers: li
                 continue
             direction = delta / dist if dist > 0 else np.array([1.0, 0.0, 0.0])
             if "infra-red" in (emitter.kind, receiver.kind):
+                # Infra-red: the receiver must be in the emitter's cone, the emitter in the receiver's
+                # (both around their +x axis), and nothing in between.
+                emitter_axis = sim.data.site_xmat[emitter.site].reshape(3, 3)[:, 0]
+                if _outside_cone(emitter_axis, -direction, emitter.aperture) or \
+                        _outside_cone(mat[:, 0], direction, receiver.aperture):
+                    continue
                 hit, _ = sim.rays.cast(pos, direction, dist, False, receiver.skip_bodies)
                 if hit < dist - 1e-3:
                     continue
