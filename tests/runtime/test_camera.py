@@ -96,6 +96,18 @@ def test_save_image_writes_a_png_with_the_same_pixels(probe):
         assert np.array_equal(rgba, bgra[:, :, [2, 1, 0, 3]])
 
 
+def test_save_image_writes_a_jpeg_close_to_the_image(probe):
+    folder, reports = probe
+    for name, report in reports.items():
+        assert report["saved_jpeg"] == 0
+        with Image.open(folder / f"{name}.jpg") as jpeg:
+            assert (jpeg.format, jpeg.size) == ("JPEG", (WIDTH, HEIGHT))
+            rgb = np.asarray(jpeg.convert("RGB")).astype(int)
+        bgra = np.frombuffer((folder / f"{name}.bgra").read_bytes(), dtype=np.uint8).reshape(HEIGHT, WIDTH, 4)
+        # Lossy at quality 95: the mean error per channel stays within a few levels.
+        assert np.abs(rgb - bgra[:, :, [2, 1, 0]].astype(int)).mean() < 4
+
+
 def _camera(sim: Simulation, robot: int = 0) -> Camera:
     return next(s for s in sim.robots[robot].sensors.values() if isinstance(s, Camera))
 

@@ -134,6 +134,18 @@ def _apply(sim: Simulation, link: Link, batch: list[tuple], hub: SupervisorHub |
     commands.apply_commands(sim, link.robot, batch, queue)
 
 
+def _save_jpeg(path: str, quality: int, width: int, height: int, rgba: bytes) -> int:
+    """Write a controller's RGBA image as a JPEG; 0 on success, -1 when it cannot be written."""
+    from PIL import Image
+
+    try:
+        image = Image.frombytes("RGBA", (int(width), int(height)), bytes(rgba)).convert("RGB")
+        image.save(path, "JPEG", quality=max(1, min(int(quality), 100)))
+    except (OSError, ValueError):
+        return -1
+    return 0
+
+
 def _catch_up(sim: Simulation, link: Link) -> None:
     """After a recompile, point the link at its robot's new state (if the robot is still there)."""
     if link.generation == sim.generation:
@@ -150,6 +162,8 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
     op, args = str(message[2]), tuple(message[3]) if len(message) > 3 else ()
     if message[1] != -1:
         return {"error": f"Error: {op}() is not supported by wbtc yet."}
+    if op == "saveImage":  # a camera's JPEG (any robot): see wire.py
+        return {"result": _save_jpeg(*args)}
     if hub is None or not link.robot.entry.supervisor:
         return {"error": f"Error: {op}() needs a Robot whose 'supervisor' field is TRUE."}
     if op == "flush":  # writes Webots applies at once (imports, removals): applied now, no time passes

@@ -1,4 +1,4 @@
-"""Image helpers shared by Camera and RangeFinder: shared-memory reads and a small PNG writer."""
+"""Image helpers shared by Camera and RangeFinder: shared-memory reads, a small PNG writer, JPEG via the simulator."""
 
 from __future__ import annotations
 
@@ -75,14 +75,20 @@ def bgra_to_rgba(bgra: bytes) -> bytes:
 
 
 def save_image(function: str, filename: str, quality: int, width: int, height: int, rgba: bytes | None) -> int:
-    """Webots' ``save_image`` checks, then a PNG file; returns 0 on success, -1 otherwise (JPEG is unsupported)."""
+    """Webots' ``save_image`` checks, then a PNG (written here) or JPEG file; returns 0 on success, -1 otherwise."""
     if not filename:
         print(f"Error: {function}() called with NULL or empty 'filename' argument.", file=sys.stderr)
         return -1
     lower = filename.lower()
     if lower.endswith((".jpg", ".jpeg")):
-        print(f"wbtc: {function}(): JPEG files are not supported, use a .png file name.", file=sys.stderr)
-        return -1
+        if rgba is None:
+            return -1
+        # The controller's Python may lack an image library: the simulator (which has Pillow) encodes it.
+        from . import _session
+
+        session = _session.require()
+        return int(session.call(-1, "saveImage", os.path.abspath(filename), int(quality), width, height, bytes(rgba),
+                                function=function, default=-1))
     if not lower.endswith(".png"):
         print(
             f"Error: {function}() called with unsupported image format (should be PNG or JPEG).",

@@ -161,7 +161,7 @@ class Camera(Sensor):
 
     @checked("save_image", -1)
     def saveImage(self, filename: str, quality: int) -> int:
-        """Save the last image as PNG; returns 0 on success, -1 otherwise (JPEG is not supported by wbtc)."""
+        """Save the last image as PNG or JPEG (``quality`` 1-100); returns 0 on success, -1 otherwise."""
         image = self._s.value
         rgba = None if image is None else _images.bgra_to_rgba(image)
         return _images.save_image("wb_camera_save_image", filename, quality, self._s.width, self._s.height, rgba)

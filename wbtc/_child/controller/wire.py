@@ -60,7 +60,9 @@ Step reply, simulator -> child
 Calls (synchronous queries, e.g. for the Supervisor API)
     ``("call", tag, op, args_tuple)`` answered by ``{"result": value}`` or ``{"error": message}`` (the child prints
     the message to stderr verbatim). A call frame carries no buffered commands; those only travel with ``step``.
-    Calls are refused child-side between ``stepBegin`` and ``stepEnd``, as in Webots. Used so far by
+    Calls are refused child-side between ``stepBegin`` and ``stepEnd``, as in Webots. ``(-1, "saveImage", abs_path,
+    quality, width, height, rgba_bytes)`` (any robot) has the simulator write a JPEG (``saveImage`` of Camera and
+    RangeFinder), answered 0 or -1. Used so far by
     ``Skin.getBoneOrientation``/``getBonePosition`` (ops of those names, args ``(index, absolute)``).
 
 Supervisor (robots whose ``supervisor`` field is TRUE; every op uses tag -1)
