@@ -49,12 +49,7 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
             else:
                 supervisor(op, args)
         elif tag in robot.motors:
-            if op in ("enableTorqueFeedback", "enableForceFeedback"):
-                robot.motors[tag].enable_feedback(int(args[0]), now)
-            elif op in ("disableTorqueFeedback", "disableForceFeedback"):
-                robot.motors[tag].enable_feedback(0, now)
-            else:
-                robot.motors[tag].apply(op, args)
+            robot.motors[tag].apply(op, args, now)
         elif tag in robot.sensors:
             sensor = robot.sensors[tag]
             if op == "enable":

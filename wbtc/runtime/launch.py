@@ -45,7 +45,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
               f"(`wbtc compile` lists them)", file=sys.stderr)
     sim = Simulation(result, seed=seed, noise=noise)
     hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
-    sim.tree = hub.tree if hub is not None else SceneTree(scene)  # Webots node ids (camera recognition)
+    if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
+        sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
     recorder = _recorder(sim, record)
     viewer = None if headless or not _has_display() else _open_viewer(sim)
     hooks = [(lambda s: _sync(viewer, s))] if viewer is not None else []

@@ -58,9 +58,13 @@ class Motor:
         self.feedback_due = math.inf
         self.feedback_value: float | None = None  # sampled since the last reply, else None
 
-    def apply(self, op: str, args: tuple) -> None:
-        """One command from the controller."""
-        if op == "setPosition":
+    def apply(self, op: str, args: tuple, now_ms: float = 0.0) -> None:
+        """One command from the controller (`now_ms`: when it applies, for feedback sampling)."""
+        if op in ("enableTorqueFeedback", "enableForceFeedback"):
+            self.enable_feedback(int(args[0]), now_ms)
+        elif op in ("disableTorqueFeedback", "disableForceFeedback"):
+            self.enable_feedback(0, now_ms)
+        elif op == "setPosition":
             self.torque = None
             target = float(args[0])
             if math.isfinite(target) and self.min_position != self.max_position:

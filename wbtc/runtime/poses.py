@@ -12,6 +12,7 @@ Not honoured yet: `scale` of Transforms between a node and its Solid in `getPosi
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import mujoco
@@ -84,20 +85,20 @@ def set_local_pose(sim: Simulation, node: Node, translation: list[float] | None,
     return True
 
 
-def world_pose(sim: Simulation, node: Node, parent_of: dict[int, Node | None]) -> tuple[np.ndarray, np.ndarray]:
+def world_pose(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | None]) -> tuple[np.ndarray, np.ndarray]:
     """A node's rotation matrix and position in the world's own frame.
 
     Args:
         sim: the simulation.
         node: any node of the scene.
-        parent_of: parent node by `id(node)` (None for top-level nodes).
+        parent_of: a node's parent (None for top-level nodes).
     """
     body = solid_body(sim, node)
     if body is not None:
         to_world = sim.from_model
         rot = to_world @ sim.data.xmat[body].reshape(3, 3) @ sim.to_model
         return rot, to_world @ sim.data.xpos[body]
-    parent = parent_of.get(id(node))
+    parent = parent_of(node)
     rot, pos = (np.eye(3), np.zeros(3)) if parent is None else world_pose(sim, parent, parent_of)
     if node.base_type in ("Pose", "Transform"):
         t = np.asarray(node.get("translation"), dtype=float)

@@ -3,8 +3,9 @@
 A supervisor that imports or removes nodes, or changes a field that the compiled model cannot
 change in place (a PROTO field, a light's intensity, a shape's colour), makes the world recompile.
 The new model is then given the old state by element name: joint positions and velocities (with
-the solver's warm start), actuator controls, simulated time; robots keep their device states
-(motor targets and PID memory, sensor periods and last values, LED values, radio channels).
+the solver's warm start) and simulated time; robots keep their device states (motor targets and
+PID memory, sensor periods and last values, LED values, radio channels), and the motors set their
+actuators' gains and controls again before the next step.
 Robots that are new start fresh; robots that are gone are dropped.
 
 Not kept across a recompile: MuJoCo's contact warm start beyond `qacc_warmstart`, and the
@@ -37,7 +38,6 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -
     data = mujoco.MjData(model)
     if keep_time:
         _copy_joints(old_model, old_data, model, data)
-        _copy_actuators(old_model, old_data, model, data)
         data.time = old_data.time
     sim.close()  # renderers belong to the old model
     sim.result, sim.model, sim.data, sim.table = result, model, data, result.table
@@ -104,15 +104,3 @@ def _copy_joints(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujo
         data.qpos[qa:qa + nq] = old_data.qpos[qb:qb + nq]
         data.qvel[va:va + nv] = old_data.qvel[vb:vb + nv]
         data.qacc_warmstart[va:va + nv] = old_data.qacc_warmstart[vb:vb + nv]
-
-
-def _copy_actuators(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujoco.MjModel,
-                    data: mujoco.MjData) -> None:
-    for a in range(model.nu):
-        try:
-            k = old_model.actuator(model.actuator(a).name).id
-        except KeyError:
-            continue
-        data.ctrl[a] = old_data.ctrl[k]
-        model.actuator_gainprm[a] = old_model.actuator_gainprm[k]
-        model.actuator_biasprm[a] = old_model.actuator_biasprm[k]

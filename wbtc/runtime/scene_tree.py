@@ -89,6 +89,11 @@ class SceneTree:
         else:
             yield from node.child_nodes()
 
+    def parent(self, node: Node) -> Node | None:
+        """The node holding `node` (None for top-level nodes and the root)."""
+        parent_id = self.parents.get(self.node_id(node))
+        return None if parent_id in (None, ROOT_ID) else self.by_id[parent_id]
+
     def node_id(self, node: Node) -> int:
         """The id of a node (assigned on first sight)."""
         if id(node) not in self.ids:

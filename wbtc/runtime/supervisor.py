@@ -116,7 +116,7 @@ class SupervisorHub:
         if op == "getNumberOfFields":
             return len(tree.field_names(node, node.proto is not None and not (args and bool(args[0]))))
         if op in ("getPosition", "getOrientation", "getPose"):
-            rot, pos = poses.world_pose(sim, node, self._parents())
+            rot, pos = poses.world_pose(sim, node, self.tree.parent)
             if op == "getPosition":
                 return [float(v) for v in pos]
             if op == "getOrientation":
@@ -140,7 +140,7 @@ class SupervisorHub:
         matrix = np.eye(4)
         matrix[:3, :3], matrix[:3, 3] = rot, pos
         if args and int(args[0]) >= 0:
-            frot, fpos = poses.world_pose(self.sim, self._node(args[0]), self._parents())
+            frot, fpos = poses.world_pose(self.sim, self._node(args[0]), self.tree.parent)
             base = np.eye(4)
             base[:3, :3], base[:3, 3] = frot, fpos
             matrix = np.linalg.inv(base) @ matrix
@@ -185,11 +185,6 @@ class SupervisorHub:
         if not 0 <= index < len(self.tree.fields):
             raise SupervisorError(f"Error: unknown field id {field_id}.")
         return self.tree.fields[index]
-
-    def _parents(self) -> dict[int, Node | None]:
-        by_id = self.tree.by_id
-        return {id(node): (by_id[p] if (p := self.tree.parents.get(nid)) not in (None, ROOT_ID) else None)
-                for nid, node in by_id.items()}
 
     # -- writes -------------------------------------------------------------------------------------
     def queue(self, robot: RobotState, op: str, args: tuple) -> None:
