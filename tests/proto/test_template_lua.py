@@ -5,55 +5,17 @@ from __future__ import annotations
 import math
 import re
 import time
-from pathlib import Path
 
 import pytest
+from template_helpers import FIXTURES, corpus_file, field, render, split_proto
 
 from wbtc.errors import ProtoError, Span
 from wbtc.proto import template_lua
-from wbtc.proto.template import evaluate_template, is_procedural, render_template
-
-CORPUS = Path(__file__).resolve().parents[2].parent / "shared" / "corpus"
-FIXTURES = Path(__file__).parent / "fixtures" / "templates"
+from wbtc.proto.template import evaluate_template, is_procedural
 
 
-def corpus_file(name: str) -> Path:
-    found = sorted(CORPUS.rglob(name))
-    assert found, f"{name} is missing from the shared corpus {CORPUS}"
-    return found[0]
-
-
-def split_proto(path: Path) -> tuple[str, int, int]:
-    """The body of a PROTO file (text after the interface's closing ']') and where it starts."""
-    text = path.read_text(encoding="utf-8")
-    i = text.index("[", re.search(r"^\s*PROTO\s", text, re.MULTILINE).end())
-    depth = 0
-    while True:
-        char = text[i]
-        if char == "#":
-            i = text.index("\n", i)
-            continue
-        if char == '"':
-            i = text.index('"', i + 1) + 1
-            continue
-        depth += {"[": 1, "]": -1}.get(char, 0)
-        if char == "]" and depth == 0:
-            break
-        i += 1
-    start = i + 1
-    line = text.count("\n", 0, start) + 1
-    column = start - (text.rfind("\n", 0, start) + 1) + 1
-    return text[start:], line, column
-
-
-def field(value, default=...):
-    return {"value": value, "defaultValue": value if default is ... else default}
-
-
-def lua(body: str, fields: dict | None = None, context: dict | None = None, *,
-        proto_path: str = "/protos/Test.proto", body_line: int = 1, body_column: int = 1):
-    return render_template(body, language="lua", fields=fields or {}, context=context or {},
-                           proto_path=proto_path, body_line=body_line, body_column=body_column)
+def lua(body: str, fields: dict | None = None, context: dict | None = None, **where):
+    return render("lua", body, fields, context, **where)
 
 
 def g14(x: float) -> str:
