@@ -16,11 +16,11 @@ def test_compile_prints_the_summary_and_writes_loadable_mjcf(tmp_path: Path) -> 
     result = runner.invoke(app, ["compile", str(WORLDS / "two_wheel_robot.wbt"), "-o", str(out)])
     assert result.exit_code == 0, result.output
     assert result.stdout.splitlines() == [
-        f"{out}: 7 bodies, 3 joints, 2 actuators, 8 geoms, 1 robots, 7 devices",
+        f"{out}: 4 bodies, 3 joints, 2 actuators, 8 geoms, 1 robots, 7 devices",
     ]
     assert result.stderr == ""
     model = mujoco.MjModel.from_xml_path(str(out))
-    assert (model.nbody - 1, model.njnt, model.nu, model.ngeom) == (7, 3, 2, 8)
+    assert (model.nbody - 1, model.njnt, model.nu, model.ngeom) == (4, 3, 2, 8)
     assert model.opt.timestep == 0.002
     assert sorted(p.name for p in tmp_path.iterdir()) == ["robot.xml"]  # no textures, no temporary files
 

@@ -171,3 +171,22 @@ def test_proto_internals_through_base_fields_and_proto_defs(hub):
     assert hub.call(referee, "getFromDef", ("EPUCK_COLUMN", -1)) is None
     column = hub.call(referee, "getFromDef", ("EPUCK_COLUMN", driver["id"]))
     assert column is not None and column["def"] == "EPUCK_COLUMN"
+
+
+def test_merged_sensors_report_their_own_pose_and_their_robots_velocity(hub):
+    # The E-puck's ps0 has no body of its own (the compiler merges massless, non-colliding devices
+    # into their robot's body, as Webots merges them into its rigid body); the supervisor still sees
+    # it where its site is, turned like it, and moving with the robot.
+    hub, referee = hub
+    sim = hub.sim
+    driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
+    robot_node = hub.tree.by_id[driver["id"]]
+    ps0 = next(i for i, n in hub.tree.by_id.items()
+               if n.get("name") == "ps0" and n.base_type == "DistanceSensor" and hub.tree.parent(n) is robot_node)
+    assert "driver/ps0" not in [sim.model.body(b).name for b in range(sim.model.nbody)]
+    site = sim.model.site("driver/ps0").id
+    assert hub.call(referee, "node.getPosition", (ps0,)) == pytest.approx(sim.data.site_xpos[site], abs=1e-9)
+    assert hub.call(referee, "node.getOrientation", (ps0,)) == pytest.approx(sim.data.site_xmat[site], abs=1e-9)
+    hub.queue(referee, "node.setVelocity", (driver["id"], [0.25, 0.0, 0.0, 0.0, 0.0, 0.0]))
+    hub.flush()
+    assert hub.call(referee, "node.getVelocity", (ps0,))[:3] == pytest.approx([0.25, 0.0, 0.0], abs=1e-9)

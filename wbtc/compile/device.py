@@ -21,7 +21,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.context import VISUAL_GROUP, CompileContext, info
-from wbtc.compile.frames import mat_to_quat
+from wbtc.compile.frames import Frame, mat_to_quat, quat_mul
 from wbtc.compile.table import DeviceEntry, RobotEntry, plain_fields
 from wbtc.scene.model import Node
 
@@ -65,8 +65,18 @@ def add_robot(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> RobotEnt
 
 
 def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: CompileContext,
-               builder: BodyBuilder) -> DeviceEntry | None:
-    """The DeviceTable entry, site and camera of a Solid device (None for a plain Solid)."""
+               builder: BodyBuilder, frame: Frame | None = None) -> DeviceEntry | None:
+    """The DeviceTable entry, site and camera of a Solid device (None for a plain Solid).
+
+    Args:
+        node: the Solid.
+        body: the body the device's site and camera go on.
+        robot: the robot owning the device.
+        ctx: the compile context.
+        builder: the body builder (unused here; kept for devices that add bodies).
+        frame: the device's pose in `body` when it is merged into its parent's body (None: the
+            device has its own body and sits at its origin).
+    """
     kind = node.base_type
     if kind not in SOLID_DEVICES:
         return None
@@ -75,23 +85,29 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     if robot.device(name) is not None:
         ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
         return None
+    at = frame or Frame.identity()
+    own = f"{robot.name}/{name}"  # the name its own body would have had
     site = body.add_site()
-    site.name = ctx.unique("site", body.name)
+    site.name = ctx.unique("site", own if frame is not None else body.name)
     site.size = [0.002, 0, 0]
     site.group = SITE_GROUP
     site.info = info(node)
-    if kind == "Lidar" and ctx.legacy_axes(node):
-        site.quat = LEGACY_LIDAR_QUAT
+    site.pos = at.pos
+    site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if kind == "Lidar" and ctx.legacy_axes(node) else at.quat
     entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, site=site.name)
     if kind in CAMERA_DEVICES:
-        entry.camera = _camera(node, body, ctx)
+        entry.camera = _camera(node, body, ctx, at, own if frame is not None else body.name)
+    if kind == "Camera":
+        # The controller reads the Recognition node's fields (plain_fields leaves node fields out).
+        recognition = node.get("recognition")
+        entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
     robot.devices.append(entry)
     return entry
 
 
-def _camera(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> str:
+def _camera(node: Node, body: mujoco.MjsBody, ctx: CompileContext, at: Frame, name: str) -> str:
     camera = body.add_camera()
-    camera.name = ctx.unique("camera", body.name)
+    camera.name = ctx.unique("camera", name)
     camera.info = info(node)
     width, height = int(node.get("width")), int(node.get("height"))
     fov = float(node.get("fieldOfView"))
@@ -99,18 +115,28 @@ def _camera(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> str:
     camera.fovy = math.degrees(2 * math.atan(math.tan(fov / 2) * height / max(width, 1)))
     camera.resolution = [width, height]
     # Pre-R2022a cameras already looked along -z with y up, which is MuJoCo's own convention.
-    camera.quat = [1.0, 0, 0, 0] if ctx.legacy_axes(node) else CAMERA_QUAT
+    camera.pos = at.pos
+    camera.quat = at.quat if ctx.legacy_axes(node) else quat_mul(at.quat, CAMERA_QUAT)
     return camera.name
 
 
-def finish_led(entry: DeviceEntry, body: mujoco.MjsBody, ctx: CompileContext) -> None:
-    """Name the LED's visual geoms so the runtime can light them."""
+def finish_led(entry: DeviceEntry, body: mujoco.MjsBody, ctx: CompileContext, first: int | None = None) -> None:
+    """Name the LED's visual geoms so the runtime can light them.
+
+    Args:
+        entry: the LED's table entry.
+        body: the LED's body, or the body it was merged into.
+        ctx: the compile context.
+        first: for a merged LED, the index of its first geom in `body` (earlier ones are the parent's).
+    """
     names = []
+    # A merged LED names its shapes after its site ("robot/led"), as its own body would.
+    prefix = f"{body.name if first is None else entry.site}/shape"
     for index, geom in enumerate(body.geoms):
-        if geom.group != VISUAL_GROUP:
+        if index < (first or 0) or geom.group != VISUAL_GROUP:
             continue
         if not geom.name:
-            geom.name = ctx.unique("geom", f"{body.name}/shape{index}")
+            geom.name = ctx.unique("geom", f"{prefix}{index - (first or 0)}")
         names.append(geom.name)
     entry.geoms = names
 

@@ -1,6 +1,8 @@
 """Solids, Robots and grouping nodes to MuJoCo bodies, with Webots' physics rules.
 
-Every Solid becomes a MuJoCo body (so the supervisor and the runtime can find it by name). Webots'
+Every Solid becomes a MuJoCo body (so the supervisor and the runtime can find it by name), except
+a robot's massless, non-colliding Solid devices (sensors, LEDs, cameras...), which are frames of
+their parent's body: Webots merges those into the parent's rigid body too. Webots' other
 rules then fall out of MuJoCo's own: a top-level Solid with Physics gets a free joint; any other
 Solid not reached through a Joint has no joint, so MuJoCo welds it to its parent: to the static
 world when the parent is static (Webots' fixed joint), into the parent's rigid body when the
@@ -29,7 +31,7 @@ import numpy as np
 from wbtc.compile import appearance, device, geometry, joint, light
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
-from wbtc.compile.table import Recognizable, RobotEntry, plain, plain_fields
+from wbtc.compile.table import Recognizable, RobotEntry, plain
 from wbtc.scene.model import Node
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "linearVelocity",
@@ -123,6 +125,9 @@ class BodyBuilder:
         ctx = self.ctx
         ctx.unhonoured(node, _UNHONOURED)
         pose = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node))
+        if robot is not None and joint_frame is None and self._mergeable(node, parent):
+            self._merge_device(node, parent, pose, robot, dynamic)
+            return parent
         body = parent.add_body()
         body.name = ctx.unique("body", _body_name(node, robot))
         body.pos, body.quat = pose.pos, pose.quat
@@ -152,16 +157,43 @@ class BodyBuilder:
         if top_level and has_physics:
             body.first_joint().damping = [_damping_rate(physics, ctx) * body.mass, 0.0, 0.0]
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
-        if entry is not None and entry.type == "Camera":
-            # The controller reads the Recognition node's fields (plain_fields leaves node fields out).
-            recognition = node.get("recognition")
-            entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
         self.walk_children(node.get("children"), body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)
         if node.is_a("Robot") and not node.get("selfCollision"):
             _exclude_self_collisions(body, ctx)
         return body
+
+    def _mergeable(self, node: Node, parent: mujoco.MjsBody) -> bool:
+        """Whether a Solid device can live in its parent's body instead of a body of its own.
+
+        Webots itself merges a Solid without Physics into its parent's rigid body. A device that
+        collides (boundingObject: contact points, TouchSensor forces) or that camera recognition
+        reports keeps its body, and so does anything at the top of the world or on a joint.
+        """
+        return (node.base_type in device.SOLID_DEVICES and node.base_type != "TouchSensor"
+                and parent is not self.ctx.spec.worldbody and not isinstance(node.get("physics"), Node)
+                and not isinstance(node.get("boundingObject"), Node) and not plain(node.get("recognitionColors")))
+
+    def _merge_device(self, node: Node, body: mujoco.MjsBody, pose: Frame, robot: RobotEntry,
+                      dynamic: bool) -> None:
+        """A massless, non-colliding Solid device as a frame of its parent's body.
+
+        A body of its own would only cost: MuJoCo computes every body's pose at every substep, and
+        a robot's sensors and LEDs outnumber its moving parts (an E-puck has 3 moving bodies and
+        32 device Solids). The device's site, camera and shapes carry the composed pose instead,
+        and the supervisor reads the Solid's pose through its parent (it has no table.solids entry).
+        """
+        ctx = self.ctx
+        if node.def_name:
+            ctx.table.bodies.setdefault(node.def_name, body.name)
+        scale = np.asarray(node.fields["scale"], dtype=float) if "scale" in node.fields else None
+        inner = Frame(pose.pos, pose.quat, pose.scale if scale is None else pose.scale * scale)
+        entry = device.add_device(node, body, robot, ctx, self, inner)
+        first = len(body.geoms)
+        self.walk_children(node.get("children"), body, inner, robot, dynamic)
+        if entry is not None and entry.type == "LED":
+            device.finish_led(entry, body, ctx, first)
 
     def _bounding(self, bounding: object, body: mujoco.MjsBody, frame: Frame,
                   solid: Node) -> list[geometry.MassProps]:

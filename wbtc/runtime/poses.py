@@ -100,7 +100,8 @@ def world_pose(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | N
         return rot, to_world @ sim.data.xpos[body]
     parent = parent_of(node)
     rot, pos = (np.eye(3), np.zeros(3)) if parent is None else world_pose(sim, parent, parent_of)
-    if node.base_type in ("Pose", "Transform"):
+    # Pose/Transform frames, and Solid devices the compiler merged into their parent's body.
+    if node.base_type in ("Pose", "Transform") or node.is_a("Solid"):
         t = np.asarray(node.get("translation"), dtype=float)
         r = node.get("rotation")
         local = _quat_mat(axis_angle_quat((r[0], r[1], r[2]), r[3]))
@@ -114,9 +115,17 @@ def _quat_mat(q: np.ndarray) -> np.ndarray:
     return mat.reshape(3, 3)
 
 
-def velocity(sim: Simulation, node: Node) -> list[float]:
-    """A Solid's linear and angular velocity in the world's own frame (six zeros without a body)."""
+def velocity(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | None] | None = None) -> list[float]:
+    """A Solid's linear and angular velocity in the world's own frame.
+
+    A Solid merged into its parent's body (a sensor, an LED) moves with the nearest ancestor that
+    has a body, as it does in Webots; six zeros when none has.
+    """
     body = solid_body(sim, node)
+    ancestor: Node | None = node
+    while body is None and parent_of is not None and ancestor is not None:
+        ancestor = parent_of(ancestor)
+        body = solid_body(sim, ancestor) if ancestor is not None else None
     if body is None:
         return [0.0] * 6
     res = np.zeros(6)

@@ -127,7 +127,7 @@ class SupervisorHub:
             com = sim.data.subtree_com[body] if body is not None else np.zeros(3)
             return [float(v) for v in sim.from_model @ com]
         if op == "getVelocity":
-            return poses.velocity(sim, node)
+            return poses.velocity(sim, node, self.tree.parent)
         if op == "getContactPoints":
             return self._contacts(node, bool(args[0]) if args else False)
         if op == "getStaticBalance":

@@ -1,0 +1,73 @@
+"""Solid devices without mass or collision become frames of their robot's body (Webots merges them too)."""
+
+
+import mujoco
+import numpy as np
+import pytest
+
+from wbtc.pipeline import compile_world
+
+WORLD = """#VRML_SIM R2025a utf8
+WorldInfo { basicTimeStep 16 }
+Robot {
+  translation 1 2 0.1
+  rotation 0 0 1 1.5707963
+  name "bot"
+  children [
+    DistanceSensor { translation 0.05 0 0 name "ds" }
+    Pose {
+      translation 0 0.02 0.03
+      rotation 0 1 0 0.5
+      children [ Camera { translation 0.01 0 0 name "cam" width 8 height 6 } ]
+    }
+    LED { translation 0 0 0.04 name "led" children [ Shape { geometry Sphere { radius 0.005 } } ] }
+    TouchSensor { translation 0 -0.05 0 name "bump" boundingObject Box { size 0.01 0.01 0.01 } }
+    DistanceSensor { translation -0.05 0 0 name "solid ds" boundingObject Sphere { radius 0.005 } }
+  ]
+  boundingObject Box { size 0.1 0.1 0.05 }
+  physics Physics { }
+}
+"""
+
+
+@pytest.fixture(scope="module")
+def compiled(tmp_path_factory):
+    world = tmp_path_factory.mktemp("frames") / "frames.wbt"
+    world.write_text(WORLD, encoding="utf-8")
+    result, _ = compile_world(world)
+    data = mujoco.MjData(result.model)
+    mujoco.mj_forward(result.model, data)
+    return result, data
+
+
+def test_only_colliding_devices_keep_a_body(compiled):
+    result, _ = compiled
+    model = result.model
+    assert [model.body(b).name for b in range(1, model.nbody)] == ["bot", "bot/bump", "bot/solid ds"]
+    robot = result.table.robots[0]
+    assert {d.name: d.body for d in robot.devices} == {
+        "ds": "bot", "cam": "bot", "led": "bot", "bump": "bot/bump", "solid ds": "bot/solid ds"}
+
+
+def test_merged_devices_sit_where_their_own_bodies_would(compiled):
+    result, data = compiled
+    model = result.model
+    # The robot is turned 90 degrees about z: its +x is the world's +y.
+    assert data.site_xpos[model.site("bot/ds").id] == pytest.approx([1.0, 2.05, 0.1], abs=1e-6)
+    # The camera: Pose (0, 0.02, 0.03) turned 0.5 rad about y, then 0.01 along that frame's x.
+    cam = data.site_xpos[model.site("bot/cam").id]
+    local = np.array([0.01 * np.cos(0.5), 0.02, 0.03 - 0.01 * np.sin(0.5)])
+    assert cam == pytest.approx([1.0 - local[1], 2.0 + local[0], 0.1 + local[2]], abs=1e-6)
+    # The MuJoCo camera sits on the device site and looks along the device's +x (its -z axis).
+    camera = model.camera("bot/cam").id
+    assert data.cam_xpos[camera] == pytest.approx(cam, abs=1e-9)
+    site_x = data.site_xmat[model.site("bot/cam").id].reshape(3, 3)[:, 0]
+    assert -data.cam_xmat[camera].reshape(3, 3)[:, 2] == pytest.approx(site_x, abs=1e-6)
+
+
+def test_a_merged_led_lights_only_its_own_shapes(compiled):
+    result, data = compiled
+    led = result.table.robots[0].device("led")
+    assert led.geoms == ["bot/led/shape0"]
+    geom = result.model.geom("bot/led/shape0").id
+    assert data.geom_xpos[geom] == pytest.approx([1.0, 2.0, 0.14], abs=1e-6)
