@@ -109,3 +109,15 @@ def test_world_reload_restarts_every_controller(tmp_path):
     assert "[referee] after reload 0.016 [1.0, 1.0, 0.05]" in output
     # The driver's controller started over too: 1 - 0.512 s of driving at 6.28 rad/s on 0.02 m wheels.
     assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * (1 - 0.512), abs=0.01)
+
+
+def test_simulation_modes_pace_the_run_and_pause_ends_it(tmp_path):
+    code, data, output = _run(_world(tmp_path, "modes"), "--duration", "5")
+    assert code == 0, output
+    # Headless runs start fast; REAL_TIME and FAST take effect from the next step on.
+    modes = re.findall(r"\[referee\] mode ([\d.]+) (\d) -> (\d)", output)
+    assert [(m[1], m[2]) for m in modes] == [("2", "1"), ("1", "2"), ("2", "0")]
+    # The 0.5 s between REAL_TIME and FAST were paced to the wall clock (a lower bound only).
+    assert data["wall_time"] >= 0.45
+    assert data["end_reason"].startswith("simulationSetMode(PAUSE) at 1.5")
+    assert data["sim_time"] == pytest.approx(1.5, abs=0.02)

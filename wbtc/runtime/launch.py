@@ -59,7 +59,7 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
                              progress=viewer is None and sys.stderr.isatty() and not json_output)
         outcome = run(sim, world, options, hub)
         if hub is not None:
-            hub.close_movie()  # a movieStartRecording never stopped ends with the run
+            hub.close_recordings()  # a movie or an animation never stopped ends with the run
         if recorder is not None:
             recorder.close()
             recorder = None

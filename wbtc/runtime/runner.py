@@ -7,6 +7,10 @@ rest, or after 60 simulated seconds (both counted over all simulated time, acros
 resets), or at a supervisor's `simulationQuit`; running controllers then get -1 from `step()` and
 one second to exit. Supervisors' writes are applied before the world advances (see `supervisor`);
 robots the world gains get their controllers started, robots it loses have theirs stopped.
+
+A supervisor's `simulationSetMode` is honoured: REAL_TIME paces the run to the wall clock from
+that moment on, FAST runs it as fast as it goes, and PAUSE ends it (Webots waits for someone to
+press Run; wbtc has no one to wait for and says so).
 """
 
 from __future__ import annotations
@@ -25,6 +29,8 @@ from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
 
 DEFAULT_LIMIT_S = 60.0
+#: Webots' simulation modes (Supervisor.SIMULATION_MODE_*).
+MODE_PAUSE, MODE_REAL_TIME, MODE_FAST = 0, 1, 2
 #: Largest joint speed (rad/s or m/s) of a world "at rest".
 REST_SPEED = 1e-3
 
@@ -180,6 +186,10 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
 def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | None = None) -> RunOutcome:
     """Run `sim` with its controllers until the end condition; see the module docstring."""
     start = time.perf_counter()
+    pace = _Pace()
+    pace.set(options.realtime, sim.time)
+    if hub is not None:
+        hub.mode = MODE_REAL_TIME if options.realtime else MODE_FAST
     links = [start_link(sim, robot, world, hub) for robot in sim.robots]
     limit_ms = (options.duration if options.duration is not None else DEFAULT_LIMIT_S) * 1000.0
     keys = sorted(options.keys)
@@ -192,6 +202,10 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             if hub.quit_status is not None:
                 reason = f"simulationQuit({hub.quit_status})"
                 break
+            if hub.mode == MODE_PAUSE:
+                reason = f"simulationSetMode(PAUSE) at {sim.time:.3f} s: nothing can resume a wbtc run"
+                break
+            pace.set(hub.mode == MODE_REAL_TIME, sim.time, restart=bool(shift))
         active = [link for link in links if link.status == "running"]
         if options.duration is None and not active and _at_rest(sim):
             reason = "all controllers ended and the world is at rest"
@@ -209,8 +223,7 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             if options.on_step and not options.on_step(sim):
                 limit_ms = sim.time_ms
                 reason = "viewer closed"
-            if options.realtime:
-                _sleep_until(start, sim.time)
+            pace.wait(sim.time)
             if options.progress and time.perf_counter() - last_progress > 0.2:
                 last_progress = time.perf_counter()
                 _progress(sim.time, limit_ms / 1000.0)
@@ -289,10 +302,25 @@ def _at_rest(sim: Simulation) -> bool:
     return len(qvel) == 0 or float(abs(qvel).max()) < REST_SPEED
 
 
-def _sleep_until(start: float, sim_time: float) -> None:
-    delay = start + sim_time - time.perf_counter()
-    if delay > 0:
-        time.sleep(delay)
+class _Pace:
+    """Real-time pacing that can be switched on and off during a run (`simulationSetMode`)."""
+
+    def __init__(self) -> None:
+        self.on = False
+        self.wall = self.sim = 0.0  # the wall-clock and simulated times pacing counts from
+
+    def set(self, on: bool, sim_time: float, restart: bool = False) -> None:
+        """Pace from now on (or stop pacing); `restart` re-anchors (the clock went back at a reset)."""
+        if on and (not self.on or restart):
+            self.wall, self.sim = time.perf_counter(), sim_time
+        self.on = on
+
+    def wait(self, sim_time: float) -> None:
+        """Sleep until the wall clock has caught up with `sim_time`, when pacing."""
+        if self.on:
+            delay = self.wall + (sim_time - self.sim) - time.perf_counter()
+            if delay > 0:
+                time.sleep(delay)
 
 
 def _progress(now: float, end: float) -> None:

@@ -13,9 +13,12 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   `worldReload` does the same and restarts every controller, the calling supervisor's included;
   `simulationQuit(status)` ends the run with that exit code.
 
-Not honoured yet: `simulationSetMode` (recorded, the run goes on at full speed), `worldLoad` (another world), movie
-`width`/`height`/`codec`/`quality`/`acceleration`/`caption` (wbtc's own MP4/GIF settings are used),
-`worldSave`, `animationStartRecording`, pose and contact-point tracking (answered on demand).
+`simulationSetMode` is kept here and honoured by the runner; `animationStartRecording` writes a
+self-contained HTML player (see `animation`).
+
+Not honoured yet: `worldLoad` (another world), movie `width`/`height`/`codec`/`quality`/`acceleration`/
+`caption` (wbtc's own MP4/GIF settings are used), `worldSave`, pose and contact-point tracking
+(answered on demand).
 """
 
 from __future__ import annotations
@@ -68,6 +71,7 @@ class SupervisorHub:
         self.applied_forces: list[int] = []
         self.changes = FlushResult()
         self.movie: Any = None  # a wbtc.runtime.record.Recorder while movieStartRecording runs
+        self.animation: Any = None  # a wbtc.runtime.animation.AnimationRecorder while animationStartRecording runs
 
     # -- queries ------------------------------------------------------------------------------------
     def call(self, robot: RobotState, op: str, args: tuple) -> Any:
@@ -244,6 +248,10 @@ class SupervisorHub:
             self._movie_start(Path(str(args[0])))
         elif op == "movieStopRecording":
             self.close_movie()
+        elif op == "animationStartRecording":
+            self._animation_start(Path(str(args[0])))
+        elif op == "animationStopRecording":
+            self.close_animation()
         elif op.startswith("node."):
             self._node_write(op[5:], self._node(args[0]), args[1:], dirty, outcome)
         elif op.startswith("field."):
@@ -294,6 +302,8 @@ class SupervisorHub:
         self.applied_forces = []
         if self.movie is not None:
             self.movie(self.sim)
+        if self.animation is not None:
+            self.animation(self.sim)
 
     def _movie_start(self, path: Path) -> None:
         """`movieStartRecording`: the Viewpoint's video from now on (MP4, or GIF by the file's suffix)."""
@@ -306,6 +316,29 @@ class SupervisorHub:
             raise SupervisorError(f"Error: movieStartRecording(): {exc}") from None
         # Frame k is due at k / fps of simulated time: start counting from now, not from 0.
         self.movie.frames = int(self.sim.time * self.movie.fps) + 1
+
+    def _animation_start(self, path: Path) -> None:
+        """`animationStartRecording`: the run from now on as an HTML page (one animation at a time)."""
+        from wbtc.runtime.animation import AnimationRecorder
+
+        if self.animation is not None:
+            raise SupervisorError("Error: wb_supervisor_animation_start_recording(): an animation is already "
+                                  "being recorded.")
+        self.animation = AnimationRecorder(self.sim, path)
+
+    def close_animation(self) -> None:
+        """Write the animation being recorded, if any (at `animationStopRecording` or the end of the run)."""
+        animation, self.animation = self.animation, None
+        if animation is not None:
+            try:
+                animation.close()
+            except OSError as exc:
+                print(f"wbtc: cannot write the animation {animation.path}: {exc.strerror or exc}", file=sys.stderr)
+
+    def close_recordings(self) -> None:
+        """Finish the movie and the animation still being recorded when the run ends."""
+        self.close_movie()
+        self.close_animation()
 
     def close_movie(self) -> None:
         """Finish the movie being recorded, if any (at `movieStopRecording` or the end of the run)."""

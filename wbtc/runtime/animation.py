@@ -1,0 +1,227 @@
+"""`animationStartRecording`: one self-contained HTML page that plays the run back in a browser.
+
+Webots writes an .html page that loads its web viewer from cyberbotics.com and plays a recorded
+scene. wbtc writes a single .html file that needs no network: the scene's visual geoms (MuJoCo's
+primitives and meshes, with their colours), the pose of every body that carries one at each frame
+(only the poses that changed), LED colour changes and supervisor labels, and a small WebGL player
+(`player/animation.js`: orbit, pan, zoom, play/pause, time slider) that draws them. Frames are taken
+every basic time step, or every few steps so that they come at most 60 times a simulated second.
+Poses are in the model's frame (ENU, z up), whatever the world's own axes.
+
+Not honoured yet: textures (a textured material shows its texture's mean colour), the scene's
+lights (the player lights from the camera, with an ambient term), height fields, bodies a
+supervisor adds after the recording started (the ones it started with are followed by name).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from importlib import resources
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.context import VISUAL_GROUP
+
+if TYPE_CHECKING:
+    from wbtc.runtime.simulation import Simulation
+
+_KINDS = {
+    mujoco.mjtGeom.mjGEOM_PLANE: "plane", mujoco.mjtGeom.mjGEOM_SPHERE: "sphere",
+    mujoco.mjtGeom.mjGEOM_CAPSULE: "capsule", mujoco.mjtGeom.mjGEOM_ELLIPSOID: "ellipsoid",
+    mujoco.mjtGeom.mjGEOM_CYLINDER: "cylinder", mujoco.mjtGeom.mjGEOM_BOX: "box",
+    mujoco.mjtGeom.mjGEOM_MESH: "mesh",
+}
+#: MuJoCo's default geom colour: a geom that has it shows its material's colour instead.
+_DEFAULT_RGBA = (0.5, 0.5, 0.5, 1.0)
+_MAX_FPS = 60.0
+
+
+class AnimationRecorder:
+    """Collects a run's frames from `start` on and writes the HTML page at `close`."""
+
+    def __init__(self, sim: Simulation, path: Path) -> None:
+        self.path = Path(path)
+        self.period_ms = sim.step_ms * max(1, math.ceil(1000.0 / _MAX_FPS / sim.step_ms - 1e-9))
+        self.start_ms = sim.time_ms
+        self.due_ms = sim.time_ms
+        self.scene = _scene(sim)
+        self.geoms = [int(g) for g in self.scene.pop("geom_ids")]
+        self.names: list[str] = self.scene["bodies"]
+        self.generation = sim.generation
+        self.ids = [sim.model.body(name).id for name in self.names]
+        self.frames: list[dict[str, Any]] = []
+        self.last_poses: dict[int, list[float]] = {}
+        self.last_rgba = np.array([self.scene["geoms"][i]["rgba"] for i in range(len(self.geoms))])
+        self.last_labels: dict[str, list] = {}
+        self(sim)
+
+    def __call__(self, sim: Simulation) -> None:
+        """Take a frame when one is due (call after every step)."""
+        if sim.time_ms + 1e-9 < self.due_ms:
+            return
+        self.due_ms += self.period_ms
+        if sim.generation != self.generation:
+            self._follow(sim)
+        frame: dict[str, Any] = {"t": round((sim.time_ms - self.start_ms) / 1000.0, 6), "p": self._poses(sim)}
+        colours = self._colours(sim)
+        if colours:
+            frame["c"] = colours
+        labels = {str(k): [str(v[0]), float(v[1]), float(v[2]), float(v[3]), f"#{int(v[4]) & 0xFFFFFF:06x}",
+                           float(v[5])] for k, v in sorted(sim.labels.items())}
+        if labels != self.last_labels:
+            frame["l"], self.last_labels = labels, labels
+        self.frames.append(frame)
+
+    def _follow(self, sim: Simulation) -> None:
+        """After a recompile, find the recorded bodies again by name (-1: gone)."""
+        ids = []
+        for name in self.names:
+            try:
+                ids.append(sim.model.body(name).id)
+            except KeyError:
+                ids.append(-1)
+        self.ids, self.generation = ids, sim.generation
+        self.geoms = [-1] * len(self.geoms)  # geom ids changed too: colours are no longer followed
+
+    def _poses(self, sim: Simulation) -> list[list[float]]:
+        changed = []
+        for index, body in enumerate(self.ids):
+            if body < 0:
+                continue
+            pose = [round(float(v), 5) for v in (*sim.data.xpos[body], *sim.data.xquat[body])]
+            if self.last_poses.get(index) != pose:
+                self.last_poses[index] = pose
+                changed.append([index, *pose])
+        return changed
+
+    def _colours(self, sim: Simulation) -> list[list[float]]:
+        changed = []
+        for index, geom in enumerate(self.geoms):
+            if geom < 0:
+                continue
+            rgba = _rgba(sim.model, geom)
+            if not np.allclose(rgba, self.last_rgba[index], atol=1e-4):
+                self.last_rgba[index] = rgba
+                changed.append([index, *(round(float(v), 4) for v in rgba)])
+        return changed
+
+    def close(self) -> None:
+        """Write the page (atomically: a reader never sees half of it)."""
+        data = dict(self.scene, frames=self.frames, duration=self.frames[-1]["t"] if self.frames else 0.0)
+        page = _page(data, self.path.stem)
+        temp = self.path.with_name(f".{self.path.name}.part")
+        temp.write_text(page, encoding="utf-8")
+        os.replace(temp, self.path)
+
+
+def _scene(sim: Simulation) -> dict[str, Any]:
+    """The visual geoms, the bodies carrying them, the meshes and the Viewpoint camera."""
+    model = sim.model
+    bodies: dict[int, int] = {}
+    geoms, geom_ids, meshes = [], [], {}
+    for g in range(model.ngeom):
+        kind = _KINDS.get(int(model.geom_type[g]))
+        rgba = _rgba(model, g)
+        if int(model.geom_group[g]) != VISUAL_GROUP or kind is None or rgba[3] <= 0:
+            continue
+        body = int(model.geom_bodyid[g])
+        entry: dict[str, Any] = {
+            "type": kind, "body": bodies.setdefault(body, len(bodies)),
+            "size": [round(float(v), 6) for v in model.geom_size[g]],
+            "pos": [round(float(v), 6) for v in model.geom_pos[g]],
+            "quat": [round(float(v), 6) for v in model.geom_quat[g]],
+            "rgba": [round(float(v), 4) for v in rgba],
+        }
+        if kind == "mesh":
+            mesh = int(model.geom_dataid[g])
+            entry["mesh"] = meshes.setdefault(mesh, len(meshes))
+        geoms.append(entry)
+        geom_ids.append(g)
+    return {
+        "format": "wbtc-animation-1",
+        "basicTimeStep": sim.step_ms,
+        "bodies": [model.body(b).name for b in bodies],
+        "geoms": geoms,
+        "geom_ids": geom_ids,
+        "meshes": [_mesh(model, m) for m in sorted(meshes, key=meshes.get)],
+        "camera": _camera(sim),
+        "background": [round(float(v), 4) for v in model.vis.rgba.haze[:3]],
+    }
+
+
+def _rgba(model: mujoco.MjModel, geom: int) -> np.ndarray:
+    """The colour a geom is drawn with: its own, or its material's (times its texture's mean colour)."""
+    rgba = np.array(model.geom_rgba[geom], dtype=float)
+    mat = int(model.geom_matid[geom])
+    if mat < 0 or not np.allclose(rgba, _DEFAULT_RGBA):
+        return rgba
+    rgba = np.array(model.mat_rgba[mat], dtype=float)
+    tex = int(model.mat_texid[mat, int(mujoco.mjtTextureRole.mjTEXROLE_RGB)])
+    if tex >= 0:
+        adr, channels = int(model.tex_adr[tex]), int(model.tex_nchannel[tex])
+        size = int(model.tex_width[tex]) * int(model.tex_height[tex]) * channels
+        texels = np.asarray(model.tex_data[adr:adr + size], dtype=float).reshape(-1, channels)
+        rgba[:3] *= texels[:, :3].mean(axis=0) / 255.0 if channels >= 3 else texels[:, 0].mean() / 255.0
+    return rgba
+
+
+def _mesh(model: mujoco.MjModel, mesh: int) -> dict[str, list]:
+    """A mesh's vertices (in its geom's frame) and triangles, flattened."""
+    vadr, vnum = int(model.mesh_vertadr[mesh]), int(model.mesh_vertnum[mesh])
+    fadr, fnum = int(model.mesh_faceadr[mesh]), int(model.mesh_facenum[mesh])
+    vertices = np.round(model.mesh_vert[vadr:vadr + vnum], 5).ravel().tolist()
+    faces = model.mesh_face[fadr:fadr + fnum].ravel().astype(int).tolist()
+    return {"vertices": vertices, "faces": faces}
+
+
+def _camera(sim: Simulation) -> dict[str, Any]:
+    """Where the page's view starts: the world's Viewpoint camera (MuJoCo cameras look along -z)."""
+    try:
+        cam = sim.model.camera("viewpoint").id
+    except KeyError:
+        return {"position": [2.0, -2.0, 1.5], "forward": [-0.6, 0.6, -0.5], "fovy": 45.0}
+    mat = sim.data.cam_xmat[cam].reshape(3, 3)
+    return {"position": [round(float(v), 5) for v in sim.data.cam_xpos[cam]],
+            "forward": [round(float(v), 5) for v in -mat[:, 2]], "fovy": float(sim.model.cam_fovy[cam])}
+
+
+def _page(data: dict[str, Any], title: str) -> str:
+    """The HTML page: the data as JSON (with `</` escaped so it cannot end its script) and the player."""
+    player = resources.files("wbtc.runtime").joinpath("player/animation.js").read_text(encoding="utf-8")
+    payload = json.dumps(data, separators=(",", ":")).replace("</", "<\\/")
+    return f"""<!DOCTYPE html>
+<html lang="en">
+<head>
+<meta charset="utf-8">
+<title>{_escape(title)} (wbtc animation)</title>
+<style>
+html, body {{ margin: 0; height: 100%; overflow: hidden; font-family: sans-serif; background: #222; }}
+#view {{ width: 100%; height: 100%; display: block; }}
+#labels {{ position: absolute; inset: 0; pointer-events: none; }}
+#labels div {{ position: absolute; white-space: pre; }}
+#bar {{ position: absolute; left: 0; right: 0; bottom: 0; display: flex; gap: 8px; align-items: center;
+        padding: 6px 10px; background: rgba(0, 0, 0, 0.55); color: #eee; }}
+#bar input {{ flex: 1; }}
+</style>
+</head>
+<body>
+<canvas id="view"></canvas>
+<div id="labels"></div>
+<div id="bar"><button id="play">Pause</button><input id="time" type="range" min="0" step="any" value="0">
+<span id="clock">0.00 s</span></div>
+<script id="wbtc-animation" type="application/json">{payload}</script>
+<script>
+{player}
+</script>
+</body>
+</html>
+"""
+
+
+def _escape(text: str) -> str:
+    return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
