@@ -9,6 +9,7 @@ is relative (value × (1 + noise × N(0, 1))); an empty table passes the value t
 from __future__ import annotations
 
 import math
+from bisect import bisect_left
 
 import numpy as np
 
@@ -21,6 +22,8 @@ class LookupTable:
         self.inputs = table[:, 0].copy()
         self.outputs = table[:, 1].copy()
         self.noises = table[:, 2].copy()
+        # Plain lists for __call__: bisect on a few floats beats numpy's per-call overhead.
+        self._in, self._out, self._noise = self.inputs.tolist(), self.outputs.tolist(), self.noises.tolist()
 
     @property
     def empty(self) -> bool:
@@ -34,17 +37,17 @@ class LookupTable:
 
     def __call__(self, x: float) -> tuple[float, float]:
         """Output and relative noise for input `x`."""
-        if self.empty:
+        inputs, outputs, noises = self._in, self._out, self._noise
+        x = float(x)  # plain floats out, whatever came in (numpy scalars do not cross the wire)
+        if not inputs:
             return x, 0.0
-        inputs = self.inputs
         if x <= inputs[0]:
-            return float(self.outputs[0]), float(self.noises[0])
+            return outputs[0], noises[0]
         if x >= inputs[-1]:
-            return float(self.outputs[-1]), float(self.noises[-1])
-        i = int(np.searchsorted(inputs, x)) - 1
+            return outputs[-1], noises[-1]
+        i = bisect_left(inputs, x) - 1
         t = (x - inputs[i]) / (inputs[i + 1] - inputs[i])
-        return (float(self.outputs[i] + t * (self.outputs[i + 1] - self.outputs[i])),
-                float(self.noises[i] + t * (self.noises[i + 1] - self.noises[i])))
+        return outputs[i] + t * (outputs[i + 1] - outputs[i]), noises[i] + t * (noises[i + 1] - noises[i])
 
 
 def apply(table: LookupTable, x: float, rng: np.random.Generator | None, resolution: float = -1.0) -> float:

@@ -78,21 +78,31 @@ class RayCaster:
         self.normal = np.zeros(3)  # the surface normal at the last hit
 
     def cast(self, start: np.ndarray, direction: np.ndarray, max_range: float, visual: bool,
-             skip_bodies: frozenset[int]) -> tuple[float, int]:
+             skip_bodies: frozenset[int], exclude: int = -1) -> tuple[float, int]:
         """Distance to the first hit within `max_range` (inf if none) and the geom hit (-1).
+
+        Args:
+            start: the ray's origin (model frame).
+            direction: its unit direction.
+            max_range: the longest distance that counts.
+            visual: True for visual geoms (infra-red), False for collision geoms.
+            skip_bodies: bodies the ray goes through (the sensor's robot).
+            exclude: one of them that MuJoCo can skip by itself (the body the sensor is on), which
+                saves casting again past its geoms.
 
         The hit surface's normal is left in `self.normal`.
         """
         groups = self.visual if visual else self.collision
-        travelled, point = 0.0, np.array(start, dtype=float)
+        travelled, point = 0.0, start
+        geom_body = self.model.geom_bodyid
         for _ in range(8):
-            dist = mujoco.mj_ray(self.model, self.data, point, direction, groups, 1, -1, self._geom, self.normal)
-            geom = int(self._geom[0])
+            dist = mujoco.mj_ray(self.model, self.data, point, direction, groups, 1, exclude, self._geom, self.normal)
             if dist < 0 or travelled + dist > max_range:
                 return math.inf, -1
-            if int(self.model.geom_bodyid[geom]) not in skip_bodies:
+            geom = int(self._geom[0])
+            if int(geom_body[geom]) not in skip_bodies:
                 return travelled + dist, geom
-            # The robot's own part: continue just past it.
+            # Another part of the robot (a wheel): continue just past it.
             step = dist + 1e-6
             travelled += step
             point = point + direction * step

@@ -105,7 +105,7 @@ class DistanceSensor(Sensor):
         nearest = math.inf
         for direction, weight in zip(self.dirs, self.weights, strict=True):
             world_dir = mat @ direction
-            dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies)
+            dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies, self.body)
             # A sonar echo returns only when the ray meets the surface within π/8 of its normal.
             if self.kind == "sonar" and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
                 dist = math.inf
