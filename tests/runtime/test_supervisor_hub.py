@@ -190,3 +190,54 @@ def test_merged_sensors_report_their_own_pose_and_their_robots_velocity(hub):
     hub.queue(referee, "node.setVelocity", (driver["id"], [0.25, 0.0, 0.0, 0.0, 0.0, 0.0]))
     hub.flush()
     assert hub.call(referee, "node.getVelocity", (ps0,))[:3] == pytest.approx([0.25, 0.0, 0.0], abs=1e-9)
+
+
+def test_save_and_load_states_and_the_initial_one(hub, capsys):
+    hub, referee = hub
+    sim = hub.sim
+    ball = hub.call(referee, "getFromDef", ("BALL", -1))
+    root = hub.call(referee, "getRoot", ())
+    body = sim.model.body("BALL").id
+    hub.queue(referee, "node.setVelocity", (ball["id"], [1.0, 0.0, 0.0, 0.0, 0.0, 0.0]))
+    hub.flush()
+    for _ in range(5):
+        sim.step()
+    saved_pos, saved_vel = sim.data.xpos[body].copy(), hub.call(referee, "node.getVelocity", (ball["id"],))
+    hub.queue(referee, "node.saveState", (ball["id"], "thrown"))
+    hub.flush()
+    for _ in range(20):
+        sim.step()
+    assert np.linalg.norm(sim.data.xpos[body] - saved_pos) > 0.1
+    hub.queue(referee, "node.loadState", (ball["id"], "thrown"))
+    hub.flush()
+    assert sim.data.xpos[body] == pytest.approx(saved_pos, abs=1e-12)
+    assert hub.call(referee, "node.getVelocity", (ball["id"],)) == pytest.approx(saved_vel, abs=1e-12)
+    # "__init__" is the world as it started: the ball back at the centre, at rest.
+    hub.queue(referee, "node.loadState", (root["id"], "__init__"))
+    hub.flush()
+    assert sim.data.xpos[body] == pytest.approx([0.0, 0.0, 0.05], abs=1e-9)
+    assert hub.call(referee, "node.getVelocity", (ball["id"],)) == pytest.approx([0.0] * 6, abs=1e-12)
+    hub.queue(referee, "node.loadState", (ball["id"], "never saved"))
+    hub.flush()
+    assert "[referee] Error: wb_supervisor_node_load_state(): no state named 'never saved' was saved." in \
+        capsys.readouterr().err
+
+
+def test_set_joint_position_turns_the_joint_at_once(tmp_path):
+    text = (FIXTURES / "arm.wbt").read_text(encoding="utf-8")
+    text = text.replace("    HingeJoint {", "    DEF SHOULDER HingeJoint {").replace('  controller "hold"',
+                                                                                   "  supervisor TRUE")
+    world = tmp_path / "arm.wbt"
+    world.write_text(text, encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub, arm = SupervisorHub(sim, scene, world), sim.robots[0]
+    shoulder = hub.call(arm, "getFromDef", ("SHOULDER", -1))
+    hub.queue(arm, "node.setJointPosition", (shoulder["id"], 0.5, 1))
+    hub.flush()
+    joint = sim.model.joint(sim.table.robots[0].device("shoulder").joint)
+    assert sim.data.qpos[joint.qposadr[0]] == 0.5
+    # The 0.2 m arm (its centre of mass at its end) turned 0.5 rad about +y: the end went down.
+    com = sim.data.xipos[joint.bodyid[0]]
+    assert com == pytest.approx([0.2 * np.cos(0.5), 0.0, 1.0 - 0.2 * np.sin(0.5)], abs=1e-9)
+    sim.close()

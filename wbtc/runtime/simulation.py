@@ -110,6 +110,12 @@ class Simulation:
             for motor in robot.motors.values():
                 motor.update(self.model, self.data, ts)
         mujoco.mj_step(self.model, self.data, nstep=self.substeps)
+        # mj_step leaves poses and velocities derived from the state before its last integration
+        # (one substep old); sensors, the supervisor and rays must see the state the step ended in.
+        mujoco.mj_kinematics(self.model, self.data)
+        mujoco.mj_comPos(self.model, self.data)
+        mujoco.mj_camlight(self.model, self.data)
+        mujoco.mj_comVel(self.model, self.data)
         self.time_ms += self.step_ms
         if self.packets:
             receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]

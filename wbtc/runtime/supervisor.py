@@ -14,7 +14,8 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   `simulationQuit(status)` ends the run with that exit code.
 
 `simulationSetMode` is kept here and honoured by the runner; `animationStartRecording` writes a
-self-contained HTML player (see `animation`).
+self-contained HTML player (see `animation`); `saveState`/`loadState`/`setJointPosition` are in
+`states`.
 
 Not honoured yet: `worldLoad` (another world), movie `width`/`height`/`codec`/`quality`/`acceleration`/
 `caption` (wbtc's own MP4/GIF settings are used), `worldSave`, pose and contact-point tracking
@@ -34,7 +35,7 @@ import numpy as np
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
-from wbtc.runtime import poses, scene_ops
+from wbtc.runtime import poses, scene_ops, states
 from wbtc.runtime.rebuild import swap_model
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
@@ -71,6 +72,7 @@ class SupervisorHub:
         self.applied_forces: list[int] = []
         self.changes = FlushResult()
         self.movie: Any = None  # a wbtc.runtime.record.Recorder while movieStartRecording runs
+        self.states = {"__init__": states.capture(sim, 0)}  # saveState/loadState, by name
         self.animation: Any = None  # a wbtc.runtime.animation.AnimationRecorder while animationStartRecording runs
 
     # -- queries ------------------------------------------------------------------------------------
@@ -269,6 +271,10 @@ class SupervisorHub:
             self._force(op, node, args)
         elif op == "restartController":
             outcome.restart += [r for r in sim.robots if r.entry.node is node]
+        elif op in ("saveState", "loadState", "setJointPosition"):
+            message = states.node_op(sim, self.states, op, node, args, self.tree.parent)
+            if message:
+                raise SupervisorError(message)
         elif op == "remove":
             holder = self.tree.parents.get(self.tree.node_id(node))
             if not self.tree.remove(node):

@@ -71,6 +71,8 @@ class NodeState:
 
         def _ok(self, function: str, article: str = "a ") -> bool: ...
 
+        def _queue(self, op: str, *args: Any) -> None: ...
+
         def _call(self, op: str, *args: Any, function: str, default: Any = None) -> Any: ...
 
     # -- pose and physics state --------------------------------------------------------------------------------
@@ -189,3 +191,28 @@ class NodeState:
             "wb_supervisor_node_disable_contact_point_tracking", "wb_supervisor_node_disable_contact_points_tracking"
         )
         self.disableContactPointsTracking()
+
+    # -- saved states and joint positions ----------------------------------------------------------------------
+    def saveState(self, stateName: str) -> None:
+        """Remember the positions and velocities of this node and its descendants as ``stateName`` (next step)."""
+        function = "wb_supervisor_node_save_state"
+        if not stateName:
+            _error(f"Error: {function}() called with NULL or empty 'state_name' argument.")
+            return
+        if self._ok(function):
+            self._queue("node.saveState", str(stateName))
+
+    def loadState(self, stateName: str) -> None:
+        """Put this node and its descendants back as saved under ``stateName`` (``"__init__"``: the start)."""
+        function = "wb_supervisor_node_load_state"
+        if not stateName:
+            _error(f"Error: {function}() called with NULL or empty 'state_name' argument.")
+            return
+        if self._ok(function):
+            self._queue("node.loadState", str(stateName))
+
+    def setJointPosition(self, position: float, index: int = 1) -> None:
+        """Set this Joint's position (rad or m) at once; ``index`` 2 is a Hinge2Joint's second axis."""
+        function = "wb_supervisor_node_set_joint_position"
+        if self._ok(function):
+            self._queue("node.setJointPosition", float(position), int(index))

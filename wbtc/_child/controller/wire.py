@@ -93,6 +93,8 @@ Supervisor (robots whose ``supervisor`` field is TRUE; every op uses tag -1)
     acceleration, caption)``, ``("movieStopRecording",)``, ``("animationStartRecording", abs_path)``,
     ``("animationStopRecording",)``, ``("setLabel", id, text, x, y, size, color_rgb_int, transparency, font)``;
     ``("node.resetPhysics", id)``, ``("node.restartController", id)``, ``("node.remove", id)``,
+    ``("node.saveState", id, name)``, ``("node.loadState", id, name)``, ``("node.setJointPosition", id, position,
+    index)``,
     ``("node.setVelocity", id, [6])``, ``("node.addForce", id, [3], relative)``, ``("node.addForceWithOffset",
     id, [3], [3], relative)``, ``("node.addTorque", id, [3], relative)``; ``("field.set", field_id, index,
     value)``, ``("field.insert", field_id, index, value)``, ``("field.remove", field_id, index)``,
