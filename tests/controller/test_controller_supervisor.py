@@ -456,6 +456,7 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         supervisor.getFromId(-1)
         supervisor.getFromDevice(5)
         supervisor.worldLoad("other.wbt")
+        supervisor.worldLoad("other.txt")
         print(supervisor.getSelected(), supervisor.virtualRealityHeadsetIsUsed(),
               len(supervisor.virtualRealityHeadsetGetPosition()), len(supervisor.virtualRealityHeadsetGetOrientation()))
         supervisor.step()
@@ -476,6 +477,7 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         (-1, "movieStopRecording"),
         (-1, "animationStartRecording", str(tmp_path / "anim.html")),
         (-1, "animationStopRecording"),
+        (-1, "worldLoad", str(tmp_path / "other.wbt")),
     ])
     fake.answer("simulationGetMode", result=0)
     rc, out, err = fake.finish()
@@ -505,7 +507,7 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         "Error: wb_supervisor_node_get_from_def() called with a NULL or empty 'def' argument.",
         "Error: wb_supervisor_node_get_from_id() called with a negative 'id' argument.",
         "Error: wb_supervisor_node_get_from_device() called with an invalid 'tag' argument.",
-        "Error: wb_supervisor_world_load(): wbtc cannot load another world (other.wbt); the world is unchanged.",
+        "Error: the target file given to wb_supervisor_world_load() should have the '.wbt' extension.",
     ]
 
 

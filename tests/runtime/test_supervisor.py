@@ -121,3 +121,25 @@ def test_simulation_modes_pace_the_run_and_pause_ends_it(tmp_path):
     assert data["wall_time"] >= 0.45
     assert data["end_reason"].startswith("simulationSetMode(PAUSE) at 1.5")
     assert data["sim_time"] == pytest.approx(1.5, abs=0.02)
+
+
+def test_world_load_replaces_the_world_and_its_controllers(tmp_path):
+    world = _world(tmp_path, "load")
+    (tmp_path / "second.wbt").write_text("""#VRML_SIM R2025a utf8
+WorldInfo { basicTimeStep 16 }
+RectangleArena { floorSize 10 10 }
+E-puck { translation 1 1 0 name "newcomer" controller "drive" controllerArgs [ "6.28" "6.28" "100" ] }
+""", encoding="utf-8")
+    code, data, output = _run(world, "--duration", "2")
+    assert code == 0, output
+    assert "[referee] save True" in output
+    # From 0.5 s on only the second world runs: its e-puck drove 6.28 rad/s x 0.02 m for about 1.5 s.
+    assert [r["name"] for r in data["robots"]] == ["newcomer"]
+    x, y, _ = data["robots"][0]["position"]
+    assert x - 1 == pytest.approx(0.1256 * 1.5, rel=0.05) and abs(y - 1) < 0.01
+    # The world saved just before still loads and holds the robots where they were at 0.5 s.
+    from wbtc.pipeline import load_world
+
+    scene, _ = load_world(tmp_path / "saved.wbt")
+    driver = next(n for n in scene.nodes if n.def_name == "DRIVER")
+    assert driver.proto.values["translation"][0] == pytest.approx(-3 + 0.1256 * 0.5, abs=0.01)

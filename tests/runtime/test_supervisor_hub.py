@@ -241,3 +241,33 @@ def test_set_joint_position_turns_the_joint_at_once(tmp_path):
     com = sim.data.xipos[joint.bodyid[0]]
     assert com == pytest.approx([0.2 * np.cos(0.5), 0.0, 1.0 - 0.2 * np.sin(0.5)], abs=1e-9)
     sim.close()
+
+
+def test_world_save_writes_joint_positions_and_leaves_the_scene_alone(tmp_path):
+    text = (FIXTURES / "arm.wbt").read_text(encoding="utf-8")
+    text = text.replace("    HingeJoint {", "    DEF SHOULDER HingeJoint {").replace('  controller "hold"',
+                                                                                   "  supervisor TRUE")
+    world = tmp_path / "arm.wbt"
+    world.write_text(text, encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub, arm = SupervisorHub(sim, scene, world), sim.robots[0]
+    shoulder = hub.call(arm, "getFromDef", ("SHOULDER", -1))
+    hub.queue(arm, "node.setJointPosition", (shoulder["id"], 0.5, 1))
+    hub.queue(arm, "worldSave", (str(tmp_path / "saved.wbt"),))
+    hub.flush()
+    joint = sim.model.joint(sim.table.robots[0].device("shoulder").joint)
+    end_com = sim.data.xipos[joint.bodyid[0]].copy()
+    sim.close()
+    saved = (tmp_path / "saved.wbt").read_text(encoding="utf-8")
+    assert saved.startswith("#VRML_SIM R2023b utf8\n# A fixed robot holding a horizontal 0.2 m arm")
+    # The running scene still holds what the file said.
+    params = hub.tree.by_id[shoulder["id"]].get("jointParameters")
+    assert params.get("position") == 0.0
+    # Loaded again, the saved world starts with the arm at 0.5 rad, where it was.
+    scene2, _ = load_world(tmp_path / "saved.wbt")
+    sim2 = Simulation(compile_scene(scene2), noise=False)
+    joint2 = sim2.model.joint(sim2.table.robots[0].device("shoulder").joint)
+    assert sim2.data.qpos[joint2.qposadr[0]] == pytest.approx(0.5, abs=1e-9)
+    assert sim2.data.xipos[joint2.bodyid[0]] == pytest.approx(end_com, abs=1e-9)
+    sim2.close()

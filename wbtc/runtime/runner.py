@@ -253,6 +253,7 @@ def _flush(sim: Simulation, world: Path, hub: SupervisorHub, links: list[Link]) 
     """
     hub.flush()
     result = hub.take_changes()
+    world = hub.world  # a supervisor's worldLoad changes it: controllers are then found beside the new file
     if result.time_shift:
         for link in links:  # time went back to 0: keep each controller's remaining wait
             link.wake_ms = max(link.wake_ms - result.time_shift, 0.0)

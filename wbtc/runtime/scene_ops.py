@@ -144,7 +144,8 @@ def export_string(node: Node) -> str:
     lines = [f"{head}{node.proto.name} {{"]
     for name, value in node.proto.values.items():
         interface = model.fields.get(name)
-        if interface is None or value is None or value == []:
+        # An empty MF value (a list, or an empty array for numeric MF fields) is the default: not written.
+        if interface is None or value is None or (hasattr(value, "__len__") and len(value) == 0):
             continue
         lines.append(f"  {name} {format_value(value, interface.type, lambda n: format_node(n, '  '))}")
     lines.append("}")

@@ -17,9 +17,11 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
 self-contained HTML player (see `animation`); `saveState`/`loadState`/`setJointPosition` are in
 `states`.
 
-Not honoured yet: `worldLoad` (another world), movie `width`/`height`/`codec`/`quality`/`acceleration`/
-`caption` (wbtc's own MP4/GIF settings are used), `worldSave`, pose and contact-point tracking
-(answered on demand).
+`worldLoad` makes another file the world (reloaded at once, every controller started anew, found
+beside that file); `worldSave` writes the world as it is now (see `world_file`).
+
+Not honoured yet: movie `width`/`height`/`codec`/`quality`/`acceleration`/`caption` (wbtc's own MP4/GIF
+settings are used), pose and contact-point tracking (answered on demand).
 """
 
 from __future__ import annotations
@@ -35,7 +37,7 @@ import numpy as np
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
-from wbtc.runtime import poses, scene_ops, states
+from wbtc.runtime import poses, scene_ops, states, world_file
 from wbtc.runtime.rebuild import swap_model
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
@@ -73,6 +75,7 @@ class SupervisorHub:
         self.changes = FlushResult()
         self.movie: Any = None  # a wbtc.runtime.record.Recorder while movieStartRecording runs
         self.states = {"__init__": states.capture(sim, 0)}  # saveState/loadState, by name
+        self.states_world = world  # the world those states belong to
         self.animation: Any = None  # a wbtc.runtime.animation.AnimationRecorder while animationStartRecording runs
 
     # -- queries ------------------------------------------------------------------------------------
@@ -236,6 +239,17 @@ class SupervisorHub:
         elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
             outcome.reset = True
             outcome.restart += list(sim.robots)
+        elif op == "worldLoad":  # another world: as worldReload, from that file (controllers found beside it)
+            self._load_other(Path(str(args[0])))
+            outcome.reset = True
+            outcome.restart += list(sim.robots)
+        elif op == "worldSave":
+            target = Path(str(args[0])) if args and args[0] else self.world
+            try:
+                world_file.save_world(sim, self.tree, self.world, target)
+            except OSError as exc:
+                raise SupervisorError(f"Error: wb_supervisor_world_save(): cannot write {target}: "
+                                      f"{exc.strerror or exc}.") from None
         elif op == "simulationResetPhysics":
             poses.reset_physics(sim, None)
         elif op == "simulationSetMode":
@@ -394,6 +408,16 @@ class SupervisorHub:
         result = compile_scene(tree.scene, self.options)
         swap_model(self.sim, result)
 
+    def _load_other(self, path: Path) -> None:
+        """Check that `worldLoad`'s file reads, then make it the world that resets load."""
+        from wbtc.pipeline import load_world
+
+        try:
+            load_world(path)
+        except (WbtcError, OSError) as exc:
+            raise SupervisorError(f"Error: wb_supervisor_world_load(): cannot load {path}: {exc}") from None
+        self.world = path
+
     def _reload(self) -> None:
         """`simulationReset`: the world as loaded, at time 0; field handles keep pointing at their nodes."""
         from wbtc.pipeline import load_world
@@ -410,3 +434,5 @@ class SupervisorHub:
         self.sim.time_ms = 0.0
         self.sim.labels = {}
         mujoco.mj_forward(self.sim.model, self.sim.data)
+        if self.states_world != self.world:  # another world (worldLoad): its own "__init__", no saved states
+            self.states, self.states_world = {"__init__": states.capture(self.sim, 0)}, self.world

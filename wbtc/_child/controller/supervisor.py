@@ -166,14 +166,18 @@ class Supervisor(Robot):
 
     # -- worlds ------------------------------------------------------------------------------------------------
     def worldLoad(self, filename: str) -> None:
-        """Replace the world: wbtc runs one world per ``wbtc run``, so this only reports that it cannot."""
+        """Replace the world by another .wbt file at the next step; every controller then starts anew."""
         function = "wb_supervisor_world_load"
-        if self._allowed(function) is None:
+        session = self._allowed(function)
+        if session is None:
             return
         if not filename:
             _error(f"Error: {function}() called with NULL or empty 'filename' argument.")
             return
-        _error(f"Error: {function}(): wbtc cannot load another world ({filename}); the world is unchanged.")
+        if _extension(filename) != "wbt":
+            _error(f"Error: the target file given to {function}() should have the '.wbt' extension.")
+            return
+        session.queue(ROBOT_TAG, "worldLoad", os.path.abspath(filename))
 
     def worldSave(self, filename: str | None = None) -> bool:
         """Save the world (over its own file without a name) at the next step."""

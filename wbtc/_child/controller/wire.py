@@ -89,6 +89,7 @@ Supervisor (robots whose ``supervisor`` field is TRUE; every op uses tag -1)
     Commands (buffered with the step, applied in order before it runs, as Webots applies them):
     ``("simulationQuit", status)``, ``("simulationReset",)``, ``("simulationResetPhysics",)``,
     ``("simulationSetMode", mode)``, ``("worldReload",)``, ``("worldSave", filename or None)``,
+    ``("worldLoad", abs_path)``,
     ``("exportImage", abs_path, quality)``, ``("movieStartRecording", abs_path, width, height, codec, quality,
     acceleration, caption)``, ``("movieStopRecording",)``, ``("animationStartRecording", abs_path)``,
     ``("animationStopRecording",)``, ``("setLabel", id, text, x, y, size, color_rgb_int, transparency, font)``;
