@@ -619,3 +619,42 @@ def test_the_two_wheels_lesson_supervisor_runs(sim) -> None:
     ])
     rc, out, err = fake.finish()
     assert (rc, out, err) == (0, "", "")
+
+
+def test_get_proto_climbs_the_chain_and_parent_parameters_are_read_only(sim) -> None:
+    fake = sim(
+        """
+        from controller import Supervisor, Proto
+        supervisor = Supervisor()
+        ball = supervisor.getFromDef("BALL")
+        box = supervisor.getFromDef("BOX")
+        proto = ball.getProto()
+        parent = proto.getProtoParent()
+        print(proto.getTypeName(), proto.isDerived(), parent.type_name, parent.isDerived(), parent.getProtoParent())
+        print(proto.getNumberOfParameters(), parent.number_of_parameters, isinstance(proto, Proto))
+        proto.getParameter("radius").setSFFloat(0.2)
+        parent.getParameterByIndex(0).setSFFloat(0.3)
+        print(box.getProto(), proto.getParameter(""), proto.getParameterByIndex(-1))
+        supervisor.step()
+        """,
+        SUPERVISOR,
+    )
+    radius = {"id": 40, "name": "radius", "type": 0x03, "count": -1}
+    inner = {"id": 41, "name": "radius", "type": 0x03, "count": -1}
+    fake.answer("getFromDef", "BALL", -1, result=BALL)
+    fake.answer("getFromDef", "BOX", -1, result=BOX)
+    fake.answer("node.getProto", 9, result=["Ball", "Sphere3"])
+    fake.answer("proto.getNumberOfParameters", 9, 1, result=4)
+    fake.answer("proto.getNumberOfParameters", 9, 2, result=2)
+    fake.answer("proto.getParameter", 9, 1, "radius", result=radius)
+    fake.answer("proto.getParameterByIndex", 9, 2, 0, result=inner)
+    fake.answer("node.getProto", 7, result=[])
+    assert fake.step() == (32, [(-1, "field.set", 40, -1, 0.2)])
+    rc, out, err = fake.finish()
+    assert rc == 0
+    assert out.splitlines() == ["Ball True Sphere3 False None", "4 2 True", "None None None"]
+    assert err.splitlines() == [
+        "Error: wb_supervisor_field_set_sf_float() called on a read-only PROTO internal field.",
+        "Error: wb_supervisor_proto_get_parameter() called with a NULL or empty 'name' argument.",
+        "Error: wb_supervisor_proto_get_parameter_by_index() called with a negative 'index' argument: -1.",
+    ]

@@ -271,3 +271,47 @@ def test_world_save_writes_joint_positions_and_leaves_the_scene_alone(tmp_path):
     assert sim2.data.qpos[joint2.qposadr[0]] == pytest.approx(0.5, abs=1e-9)
     assert sim2.data.xipos[joint2.bodyid[0]] == pytest.approx(end_com, abs=1e-9)
     sim2.close()
+
+
+def test_proto_chain_of_a_derived_proto(tmp_path, capsys):
+    (tmp_path / "RedBox.proto").write_text("""#VRML_SIM R2025a utf8
+EXTERNPROTO "webots://projects/objects/geometries/protos/SolidBox.proto"
+PROTO RedBox [
+  field SFVec3f translation 0 0 0.05
+  field SFVec3f size 0.1 0.1 0.1
+]
+{
+  SolidBox {
+    translation IS translation
+    size IS size
+    name "red box"
+  }
+}
+""", encoding="utf-8")
+    world = tmp_path / "derived.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+EXTERNPROTO "RedBox.proto"
+WorldInfo { basicTimeStep 16 }
+DEF RB RedBox { translation 1 0 0.05 }
+DEF SUP Robot { supervisor TRUE }
+""", encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub, sup = SupervisorHub(sim, scene, world), sim.robots[0]
+    box = hub.call(sup, "getFromDef", ("RB", -1))["id"]
+    assert hub.call(sup, "node.getProto", (box,)) == ["RedBox", "SolidBox"]
+    assert hub.call(sup, "proto.getNumberOfParameters", (box, 1)) == 2
+    own = hub.call(sup, "proto.getParameter", (box, 1, "translation"))
+    assert own == hub.call(sup, "node.getField", (box, "translation", False))  # the same Field as getField
+    assert hub.call(sup, "field.get", (own["id"], -1)) == [1.0, 0.0, 0.05]
+    name = hub.call(sup, "proto.getParameter", (box, 2, "name"))
+    assert hub.call(sup, "field.get", (name["id"], -1)) == "red box"
+    by_index = hub.call(sup, "proto.getParameterByIndex", (box, 2, 0))
+    assert by_index["name"] == "translation" and by_index["id"] != own["id"]
+    assert hub.call(sup, "proto.getParameter", (box, 2, "nope")) is None
+    hub.queue(sup, "field.set", (name["id"], -1, "renamed"))
+    hub.flush()
+    assert "is a read-only PROTO internal field" in capsys.readouterr().err
+    assert hub.call(sup, "field.get", (name["id"], -1)) == "red box"
+    assert hub.call(sup, "node.getProto", (hub.call(sup, "getSelf", ())["id"],)) == []
+    sim.close()

@@ -177,3 +177,31 @@ def dof_width(joint_type: int, qpos: bool = False) -> int:
     if joint_type == mujoco.mjtJoint.mjJNT_BALL:
         return 4 if qpos else 3
     return 1
+
+
+def add_force(sim: Simulation, node: Node, op: str, args: tuple) -> int | None:
+    """`addForce`/`addForceWithOffset`/`addTorque` for the coming step; the body pushed (None: no body).
+
+    Args:
+        sim: the simulation.
+        node: the Solid.
+        op: which of the three calls.
+        args: the vector, [the offset,] and whether they are in the Solid's frame (`relative`).
+    """
+    body = solid_body(sim, node)
+    if body is None:
+        return None
+    vector = np.asarray(args[0], dtype=float)
+    relative = bool(args[-1])
+    rot = sim.data.xmat[body].reshape(3, 3)
+    # Webots' vectors are in the world's frame, or in the Solid's frame when `relative`.
+    world = rot @ vector if relative else sim.to_model @ vector
+    if op == "addTorque":
+        sim.data.xfrc_applied[body, 3:] += world
+    else:
+        sim.data.xfrc_applied[body, :3] += world
+        if op == "addForceWithOffset":
+            # MuJoCo applies xfrc at the centre of mass: an offset force adds the torque it makes there.
+            offset = rot @ np.asarray(args[1], dtype=float)
+            sim.data.xfrc_applied[body, 3:] += np.cross(offset + sim.data.xpos[body] - sim.data.xipos[body], world)
+    return body

@@ -42,7 +42,9 @@ class FieldRef:
     node: Node
     name: str
     type: str
-    proto: bool  # True: a PROTO interface field; False: a field of the (expanded) built-in node
+    # 0 (False): a field of the (expanded) built-in node; 1 (True): an interface field of the node's
+    # PROTO; 2, 3...: a parameter of the PROTO it derives from, and so on (read-only).
+    proto: int
 
 
 class SceneTree:
@@ -55,7 +57,7 @@ class SceneTree:
         self.ids: dict[int, int] = {id(self.root): ROOT_ID}
         self.parents: dict[int, int] = {}
         self.fields: list[FieldRef] = []
-        self.field_keys: dict[tuple[int, str, bool], int] = {}
+        self.field_keys: dict[tuple[int, str, int], int] = {}
         self.refresh()
 
     # -- ids ----------------------------------------------------------------------------------------
@@ -149,28 +151,31 @@ class SceneTree:
         return None
 
     # -- fields ------------------------------------------------------------------------------------
-    def field_names(self, node: Node, proto: bool) -> list[tuple[str, str]]:
-        """(name, type) of a node's fields in declaration order; PROTO interface when `proto`."""
+    def field_names(self, node: Node, proto: int) -> list[tuple[str, str]]:
+        """(name, type) of a node's fields in declaration order; a PROTO level's interface when `proto`."""
         if node is self.root:
             return [("children", "MFNode")]
-        if proto and node.proto is not None:
-            model = load_proto(node.proto.source.path)
+        if proto:
+            instance = instance_at(node, proto)
+            if instance is None:
+                return []
+            model = load_proto(instance.source.path)
             return [(f.name, f.type) for f in model.fields.values()]
         if node.schema is None:
             return []
         return [(f.name, f.type) for f in node.schema.fields.values()]
 
-    def field(self, node: Node, name: str, proto: bool) -> FieldRef | None:
+    def field(self, node: Node, name: str, proto: int) -> FieldRef | None:
         """A field ref, allocated once per (node, name, kind)."""
         types = dict(self.field_names(node, proto))
         if name not in types:
             return None
-        key = (id(node), name, proto)
+        key = (id(node), name, int(proto))
         fid = self.field_keys.get(key)
         if fid is None:
             fid = len(self.fields)
             self.field_keys[key] = fid
-            self.fields.append(FieldRef(fid, node, name, types[name], proto))
+            self.fields.append(FieldRef(fid, node, name, types[name], int(proto)))
         return self.fields[fid]
 
     def field_ref(self, ref: FieldRef) -> dict[str, Any]:
@@ -183,7 +188,8 @@ class SceneTree:
         if ref.node is self.root:
             return self.scene.nodes
         if ref.proto:
-            return ref.node.proto.values.get(ref.name)
+            instance = instance_at(ref.node, ref.proto)
+            return instance.values.get(ref.name) if instance is not None else None
         return ref.node.get(ref.name)
 
     def store(self, ref: FieldRef, value: Any) -> None:
@@ -206,6 +212,23 @@ class SceneTree:
         if ref.type.endswith("Node"):
             return self.ref(value) if isinstance(value, Node) else None
         return to_plain(value)
+
+
+def instance_at(node: Node, level: int) -> Any:
+    """The PROTO instance a node expands from at `level` (1: its own; 2: the one that PROTO's body is)."""
+    instance = node.proto
+    for _ in range(int(level) - 1):
+        instance = instance.inner if instance is not None else None
+    return instance
+
+
+def proto_names(node: Node) -> list[str]:
+    """The node's PROTO chain, its own PROTO first (empty for a built-in node)."""
+    names, instance = [], node.proto
+    while instance is not None:
+        names.append(instance.name)
+        instance = instance.inner
+    return names
 
 
 def items_of(value: Any) -> list:

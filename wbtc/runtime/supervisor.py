@@ -39,7 +39,8 @@ from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
 from wbtc.runtime import poses, scene_ops, states, world_file
 from wbtc.runtime.rebuild import swap_model
-from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, to_typed
+from wbtc.runtime.recordings import RecordingError, Recordings
+from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, proto_names, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
 from wbtc.scene.model import Node, Scene
 
@@ -73,10 +74,9 @@ class SupervisorHub:
         self.mode = 1
         self.applied_forces: list[int] = []
         self.changes = FlushResult()
-        self.movie: Any = None  # a wbtc.runtime.record.Recorder while movieStartRecording runs
+        self.recordings = Recordings()
         self.states = {"__init__": states.capture(sim, 0)}  # saveState/loadState, by name
         self.states_world = world  # the world those states belong to
-        self.animation: Any = None  # a wbtc.runtime.animation.AnimationRecorder while animationStartRecording runs
 
     # -- queries ------------------------------------------------------------------------------------
     def call(self, robot: RobotState, op: str, args: tuple) -> Any:
@@ -99,6 +99,8 @@ class SupervisorHub:
             return self.mode
         if op.startswith("node."):
             return self._node_query(op[5:], self._node(args[0]), args[1:])
+        if op.startswith("proto."):
+            return self._proto_query(op[6:], self._node(args[0]), int(args[1]), args[2:])
         if op == "field.get":
             return self._field_get(self._field(args[0]), int(args[1]))
         if op == "field.getCount":
@@ -106,8 +108,23 @@ class SupervisorHub:
             return len(items_of(self.tree.raw(ref))) if ref.type.startswith("MF") else -1
         raise SupervisorError(f"Error: {op}() is not supported by wbtc yet.")
 
+    def _proto_query(self, op: str, node: Node, level: int, args: tuple) -> Any:
+        """`Proto` getters of one level of a node's PROTO chain (1: its own PROTO)."""
+        names = self.tree.field_names(node, level)
+        if op == "getNumberOfParameters":
+            return len(names)
+        if op == "getParameterByIndex":
+            index = int(args[0])
+            name = names[index][0] if 0 <= index < len(names) else None
+        else:
+            name = str(args[0])
+        ref = self.tree.field(node, name, level) if name is not None else None
+        return self.tree.field_ref(ref) if ref is not None else None
+
     def _node_query(self, op: str, node: Node, args: tuple) -> Any:
         tree, sim = self.tree, self.sim
+        if op == "getProto":
+            return proto_names(node)
         if op in ("getField", "getFieldByIndex"):
             # getField of a PROTO instance is an interface field; the base flag (getBaseNodeField, once
             # getProtoField) asks for the field of the built-in node the PROTO expands to.
@@ -260,14 +277,16 @@ class SupervisorHub:
                                          float(transparency), str(font))
         elif op == "exportImage":
             scene_ops.export_image(sim, str(args[0]), int(args[1]))
-        elif op == "movieStartRecording":
-            self._movie_start(Path(str(args[0])))
+        elif op in ("movieStartRecording", "animationStartRecording"):
+            start = self.recordings.start_movie if op == "movieStartRecording" else self.recordings.start_animation
+            try:
+                start(sim, Path(str(args[0])))
+            except RecordingError as exc:
+                raise SupervisorError(str(exc)) from None
         elif op == "movieStopRecording":
-            self.close_movie()
-        elif op == "animationStartRecording":
-            self._animation_start(Path(str(args[0])))
+            self.recordings.close_movie()
         elif op == "animationStopRecording":
-            self.close_animation()
+            self.recordings.close_animation()
         elif op.startswith("node."):
             self._node_write(op[5:], self._node(args[0]), args[1:], dirty, outcome)
         elif op.startswith("field."):
@@ -282,7 +301,9 @@ class SupervisorHub:
         elif op == "setVelocity":
             poses.set_velocity(sim, node, list(args[0]))
         elif op in ("addForce", "addForceWithOffset", "addTorque"):
-            self._force(op, node, args)
+            body = poses.add_force(sim, node, op, args)
+            if body is not None:
+                self.applied_forces.append(body)
         elif op == "restartController":
             outcome.restart += [r for r in sim.robots if r.entry.node is node]
         elif op in ("saveState", "loadState", "setJointPosition"):
@@ -295,82 +316,21 @@ class SupervisorHub:
                 raise SupervisorError("Error: this node cannot be removed.")
             dirty.add(holder if holder is not None else ROOT_ID)
 
-    def _force(self, op: str, node: Node, args: tuple) -> None:
-        sim = self.sim
-        body = poses.solid_body(sim, node)
-        if body is None:
-            return
-        vector = np.asarray(args[0], dtype=float)
-        relative = bool(args[-1])
-        rot = sim.data.xmat[body].reshape(3, 3)
-        # Webots' vectors are in the world's frame, or in the Solid's frame when `relative`.
-        world = rot @ vector if relative else sim.to_model @ vector
-        if op == "addTorque":
-            sim.data.xfrc_applied[body, 3:] += world
-        else:
-            sim.data.xfrc_applied[body, :3] += world
-            if op == "addForceWithOffset":
-                offset = rot @ np.asarray(args[1], dtype=float)
-                sim.data.xfrc_applied[body, 3:] += np.cross(offset + sim.data.xpos[body] - sim.data.xipos[body],
-                                                            world)
-        self.applied_forces.append(body)
-
     def after_step(self) -> None:
         """Forces added by a supervisor last one step, as in Webots; a movie being recorded gets its frames."""
         for body in self.applied_forces:
             self.sim.data.xfrc_applied[body] = 0.0
         self.applied_forces = []
-        if self.movie is not None:
-            self.movie(self.sim)
-        if self.animation is not None:
-            self.animation(self.sim)
-
-    def _movie_start(self, path: Path) -> None:
-        """`movieStartRecording`: the Viewpoint's video from now on (MP4, or GIF by the file's suffix)."""
-        from wbtc.runtime.record import Recorder
-
-        self.close_movie()
-        try:
-            self.movie = Recorder(self.sim, path)
-        except WbtcError as exc:
-            raise SupervisorError(f"Error: movieStartRecording(): {exc}") from None
-        # Frame k is due at k / fps of simulated time: start counting from now, not from 0.
-        self.movie.frames = int(self.sim.time * self.movie.fps) + 1
-
-    def _animation_start(self, path: Path) -> None:
-        """`animationStartRecording`: the run from now on as an HTML page (one animation at a time)."""
-        from wbtc.runtime.animation import AnimationRecorder
-
-        if self.animation is not None:
-            raise SupervisorError("Error: wb_supervisor_animation_start_recording(): an animation is already "
-                                  "being recorded.")
-        self.animation = AnimationRecorder(self.sim, path)
-
-    def close_animation(self) -> None:
-        """Write the animation being recorded, if any (at `animationStopRecording` or the end of the run)."""
-        animation, self.animation = self.animation, None
-        if animation is not None:
-            try:
-                animation.close()
-            except OSError as exc:
-                print(f"wbtc: cannot write the animation {animation.path}: {exc.strerror or exc}", file=sys.stderr)
+        self.recordings.after_step(self.sim)
 
     def close_recordings(self) -> None:
         """Finish the movie and the animation still being recorded when the run ends."""
-        self.close_movie()
-        self.close_animation()
-
-    def close_movie(self) -> None:
-        """Finish the movie being recorded, if any (at `movieStopRecording` or the end of the run)."""
-        movie, self.movie = self.movie, None
-        if movie is not None:
-            try:
-                movie.close()
-            except WbtcError as exc:
-                print(f"wbtc: {exc}", file=sys.stderr)
+        self.recordings.close()
 
     def _field_write(self, op: str, ref: FieldRef, args: tuple, dirty: set[int]) -> None:
         tree = self.tree
+        if ref.proto > 1:  # a parent PROTO's parameter: what the derived PROTO wrote, not the world's
+            raise SupervisorError(f"Error: field '{ref.name}' is a read-only PROTO internal field.")
         owner = tree.node_id(ref.node)
         if op == "set":
             index, value = int(args[0]), args[1]

@@ -20,7 +20,7 @@ _MODULES = {
     "Field": "field", "GPS": "gps", "Gyro": "gyro", "InertialUnit": "inertial_unit", "Joystick": "joystick",
     "Keyboard": "keyboard", "LED": "led", "Lidar": "lidar", "LidarPoint": "lidar_point", "LightSensor": "light_sensor",
     "Motion": "motion", "Motor": "motor", "Mouse": "mouse", "MouseState": "mouse", "Node": "node", "Pen": "pen",
-    "PositionSensor": "position_sensor", "Radar": "radar", "RadarTarget": "radar_target",
+    "PositionSensor": "position_sensor", "Proto": "proto", "Radar": "radar", "RadarTarget": "radar_target",
     "RangeFinder": "range_finder", "Receiver": "receiver", "Skin": "skin", "Speaker": "speaker",
     "Supervisor": "supervisor", "TouchSensor": "touch_sensor", "VacuumGripper": "vacuum_gripper",
 }

@@ -8,13 +8,16 @@ physics state and contact point getters live in ``_node_state``, whose ``NodeSta
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from . import _session
 from ._field_values import check_vector, to_doubles
 from ._node_state import NodeState
 from .constants import NODE_TYPE_NAMES, node_constant_name, node_type
 from .field import Field
+
+if TYPE_CHECKING:
+    from .proto import Proto
 
 ROBOT_TAG = _session.ROBOT_TAG
 NAN = _session.NAN
@@ -187,6 +190,16 @@ class Node(NodeState):
             return -1
         count = self._call("node.getNumberOfFields", proto and self._proto, function=function)
         return int(count) if count is not None and count > 0 else -1
+
+    def getProto(self) -> Proto | None:
+        """The PROTO this node is an instance of (None for a built-in node)."""
+        from .proto import Proto
+
+        function = "wb_supervisor_node_get_proto"
+        if not self._ok(function):
+            return None
+        names = self._call("node.getProto", function=function)
+        return Proto(self._id, names) if names else None
 
     def getField(self, fieldName: str) -> Field | None:
         """The field (a PROTO instance: the parameter) with that name, or None."""
