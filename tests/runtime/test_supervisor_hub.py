@@ -133,31 +133,6 @@ def test_simulation_reset_restores_the_initial_state(hub):
     assert hub.call(referee, "node.getPosition", (driver["id"],))[:2] == pytest.approx([-3, -3], abs=1e-9)
 
 
-def test_labels_reach_the_viewer_overlay(hub):
-    import mujoco
-
-    from wbtc.runtime.launch import _sync
-
-    hub, _ = hub
-
-    class Viewer:
-        texts = None
-
-        def is_running(self):
-            return True
-
-        def set_texts(self, texts):
-            self.texts = texts
-
-        def sync(self):
-            pass
-
-    hub.sim.labels = {2: ("Frame: 7th", 0.8, 0.1, 0.1, 0xFF0000, 0.2, "Arial"), 1: ("Key 315", 0, 0, 0.1, 0, 0, "")}
-    viewer = Viewer()
-    assert _sync(viewer, hub.sim)
-    assert viewer.texts == (None, int(mujoco.mjtGridPos.mjGRID_TOPLEFT), "Key 315\nFrame: 7th", "")
-
-
 def test_proto_internals_through_base_fields_and_proto_defs(hub):
     hub, referee = hub
     driver = hub.call(referee, "getFromDef", ("DRIVER", -1))

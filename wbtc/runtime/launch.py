@@ -13,8 +13,6 @@ import sys
 from collections.abc import Callable
 from pathlib import Path
 
-import mujoco
-
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
@@ -25,9 +23,7 @@ from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
 from wbtc.runtime.supervisor import SupervisorHub
-
-# GLFW key codes the viewer reports, to Webots' (letters and digits are ASCII in both).
-_GLFW_KEYS = {262: 316, 263: 314, 264: 317, 265: 315, 266: 366, 267: 367, 268: 313, 269: 312, 32: 32}
+from wbtc.runtime.viewer import open_viewer
 
 
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
@@ -48,8 +44,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
         sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
     recorder = _recorder(sim, record)
-    viewer = None if headless or not _has_display() else _open_viewer(sim)
-    hooks = [(lambda s: _sync(viewer, s))] if viewer is not None else []
+    viewer = None if headless or not _has_display() else open_viewer(sim)
+    hooks = [viewer.sync] if viewer is not None else []
     hooks += [recorder] if recorder is not None else []
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
     try:
@@ -98,30 +94,3 @@ def _chain(hooks: list[Callable[[Simulation], bool]]) -> Callable[[Simulation], 
 
 def _has_display() -> bool:
     return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")) or sys.platform == "darwin"
-
-
-def _open_viewer(sim: Simulation):  # noqa: ANN202  (mujoco.viewer's handle type is private)
-    import mujoco.viewer
-
-    def on_key(code: int) -> None:
-        sim.keys_down.append(_GLFW_KEYS.get(code, code))
-
-    try:
-        return mujoco.viewer.launch_passive(sim.model, sim.data, key_callback=on_key)
-    except Exception as exc:  # no usable GL on this display: run headless instead
-        print(f"wbtc: the viewer cannot open ({exc}); running headless", file=sys.stderr)
-        return None
-
-
-def _sync(viewer, sim: Simulation) -> bool:  # noqa: ANN001
-    if not viewer.is_running():
-        return False
-    if sim.labels and hasattr(viewer, "set_texts"):
-        # Supervisor labels (setLabel) as the viewer's top-left overlay text, in id order.
-        text = "\n".join(label[0] for _, label in sorted(sim.labels.items()) if label[0])
-        try:
-            viewer.set_texts((None, int(mujoco.mjtGridPos.mjGRID_TOPLEFT), text, ""))
-        except (TypeError, ValueError):  # older viewers take other shapes: labels stay in recordings only
-            pass
-    viewer.sync()
-    return True
