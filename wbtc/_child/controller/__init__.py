@@ -6,10 +6,15 @@ controller, one given ``WBTC_CONTROLLER_URL``); ``wire.py`` describes the protoc
 Supervisor controllers use ``Supervisor`` (a ``Robot``), ``Node``, ``Field`` and ``ContactPoint``.
 """
 
+from __future__ import annotations
+
 import importlib
-from typing import Any
 
 from .robot import Robot  # noqa: F401 (the one class every controller needs: loaded at once)
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 #: Public name -> the module defining it. Loaded on first use (``from controller import Camera`` or a
 #: robot having a camera), so that starting a controller does not import every device class.

@@ -8,7 +8,6 @@ values do (writes leave with the next step); inserts and removals are immediate,
 from __future__ import annotations
 
 import operator
-from typing import TYPE_CHECKING, Any
 
 from . import _session
 from ._field_values import (
@@ -29,7 +28,10 @@ from ._field_values import (
     to_str,
 )
 
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from typing import Any
+
     from .node import Node
 
 NAN = _session.NAN

@@ -7,9 +7,12 @@ the conversions reproduce what the ctypes calls of Webots' Python package accept
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from . import _session
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 FLT_MAX = 3.4028234663852886e38
 

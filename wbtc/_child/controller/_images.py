@@ -7,7 +7,10 @@ import os
 import struct
 import sys
 import zlib
-from typing import Any
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 _blocks: dict[str, tuple[Any, Any]] = {}  # name -> (object keeping the mapping alive, buffer)
 

@@ -8,12 +8,13 @@ once-per-process deprecation warning.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from . import _session
 from .contact_point import ContactPoint
 
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from typing import Any
+
     from .node import Node
 
 NAN = _session.NAN

@@ -10,9 +10,12 @@ import atexit
 import sys
 import weakref
 from collections.abc import Callable
-from typing import Any
 
 from .wire import Wire, WireClosed
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 NAN = float("nan")
 ROBOT_TAG = -1

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from . import _images, _session
 from .device import checked
 from .sensor import NAN, Sensor
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 
 def _node(state: _session.DeviceState, name: str) -> dict | None:

@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import functools
 from collections.abc import Callable
-from typing import Any, TypeVar
 
 from . import _session
 from .constants import node_type
 
-F = TypeVar("F", bound="Callable[..., Any]")
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
+    F = TypeVar("F", bound="Callable[..., Any]")
 
 
 def checked(suffix: str, default: Any = None) -> Callable[[F], F]:

@@ -18,7 +18,6 @@ inherits.
 from __future__ import annotations
 
 import operator
-from typing import TYPE_CHECKING, Any
 
 from . import _session
 from ._field_mf import MFItems
@@ -53,7 +52,10 @@ from ._field_values import (
     valid_item,
 )
 
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from typing import Any
+
     from .node import Node
 
 ROBOT_TAG = _session.ROBOT_TAG

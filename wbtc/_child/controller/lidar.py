@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 from array import array
-from typing import Any
 
 from . import _session
 from .device import checked
 from .lidar_point import LidarPoint
 from .sensor import NAN, Sensor
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 
 class Lidar(Sensor):

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 import math
-from typing import Any
 
 from . import _session
 from .constants import LINEAR, ROTATIONAL
 from .device import Device, checked
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 NAN = _session.NAN
 

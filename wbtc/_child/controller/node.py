@@ -8,15 +8,16 @@ physics state and contact point getters live in ``_node_state``, whose ``NodeSta
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from . import _session
 from ._field_values import check_vector, to_doubles
 from ._node_state import NodeState
 from .constants import NODE_TYPE_NAMES, node_constant_name, node_type
 from .field import Field
 
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from typing import Any
+
     from .proto import Proto
 
 ROBOT_TAG = _session.ROBOT_TAG

@@ -7,11 +7,12 @@ chain. The parameters of the node's own PROTO are its interface fields (the ``Fi
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
-
 from . import _session
 
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from typing import Any
+
     from .field import Field
 
 

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from . import _session
 from .device import checked
 from .radar_target import RadarTarget
 from .sensor import NAN, Sensor
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 
 def _target(item: Any) -> RadarTarget:

@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import struct
-from typing import Any
 
 from . import _session
 from .device import checked
 from .emitter import _allowed
 from .sensor import NAN, Sensor
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 
 class _Packet:

@@ -5,7 +5,6 @@ from __future__ import annotations
 import importlib
 import sys
 import time as _time
-from typing import Any
 
 from . import _session
 from .constants import node_type
@@ -13,6 +12,10 @@ from .device import Device
 from .joystick import Joystick
 from .keyboard import Keyboard
 from .mouse import Mouse
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 #: Webots base node type name -> (module, class) of its device class. Imported when a robot has such a
 #: device, so that a controller starts without loading the classes of devices it does not have.

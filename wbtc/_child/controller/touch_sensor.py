@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 from . import _session
 from .device import checked
 from .sensor import NAN, Sensor, flat_lookup_table
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 _KINDS = {"bumper": 0, "force": 1, "force-3d": 2}
 

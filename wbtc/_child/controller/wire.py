@@ -125,8 +125,10 @@ import os
 import pickle
 import socket
 import struct
-from typing import Any
-from urllib.parse import parse_qs, unquote
+
+TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
+if TYPE_CHECKING:
+    from typing import Any
 
 PROTOCOL = 4
 _HEADER = struct.Struct("<I")
@@ -177,6 +179,8 @@ def recv_frame(sock: socket.socket) -> Any:
 
 def parse_url(url: str) -> tuple[str, str | None]:
     """Split ``unix:/path/to/socket[?robot=NAME]`` into the socket path and the robot name (or None)."""
+    from urllib.parse import parse_qs, unquote  # only extern controllers need it
+
     if not url.startswith("unix:"):
         raise ValueError(f"unsupported controller URL {url!r}: expected unix:/path/to/socket[?robot=NAME]")
     rest = url[len("unix:"):]
