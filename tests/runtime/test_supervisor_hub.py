@@ -198,7 +198,8 @@ def test_save_and_load_states_and_the_initial_one(hub, capsys):
         capsys.readouterr().err
 
 
-def test_set_joint_position_turns_the_joint_at_once(tmp_path):
+def _arm_supervisor(tmp_path):
+    """fixtures/arm.wbt with its robot made a supervisor and its joint named SHOULDER."""
     text = (FIXTURES / "arm.wbt").read_text(encoding="utf-8")
     text = text.replace("    HingeJoint {", "    DEF SHOULDER HingeJoint {").replace('  controller "hold"',
                                                                                    "  supervisor TRUE")
@@ -207,7 +208,11 @@ def test_set_joint_position_turns_the_joint_at_once(tmp_path):
     scene, _ = load_world(world)
     sim = Simulation(compile_scene(scene), noise=False)
     hub, arm = SupervisorHub(sim, scene, world), sim.robots[0]
-    shoulder = hub.call(arm, "getFromDef", ("SHOULDER", -1))
+    return sim, hub, arm, hub.call(arm, "getFromDef", ("SHOULDER", -1))
+
+
+def test_set_joint_position_turns_the_joint_at_once(tmp_path):
+    sim, hub, arm, shoulder = _arm_supervisor(tmp_path)
     hub.queue(arm, "node.setJointPosition", (shoulder["id"], 0.5, 1))
     hub.flush()
     joint = sim.model.joint(sim.table.robots[0].device("shoulder").joint)
@@ -219,15 +224,7 @@ def test_set_joint_position_turns_the_joint_at_once(tmp_path):
 
 
 def test_world_save_writes_joint_positions_and_leaves_the_scene_alone(tmp_path):
-    text = (FIXTURES / "arm.wbt").read_text(encoding="utf-8")
-    text = text.replace("    HingeJoint {", "    DEF SHOULDER HingeJoint {").replace('  controller "hold"',
-                                                                                   "  supervisor TRUE")
-    world = tmp_path / "arm.wbt"
-    world.write_text(text, encoding="utf-8")
-    scene, _ = load_world(world)
-    sim = Simulation(compile_scene(scene), noise=False)
-    hub, arm = SupervisorHub(sim, scene, world), sim.robots[0]
-    shoulder = hub.call(arm, "getFromDef", ("SHOULDER", -1))
+    sim, hub, arm, shoulder = _arm_supervisor(tmp_path)
     hub.queue(arm, "node.setJointPosition", (shoulder["id"], 0.5, 1))
     hub.queue(arm, "worldSave", (str(tmp_path / "saved.wbt"),))
     hub.flush()
