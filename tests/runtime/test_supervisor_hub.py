@@ -125,12 +125,15 @@ def test_simulation_reset_restores_the_initial_state(hub):
     hub.flush()
     for _ in range(30):
         sim.step()
+    sim.rng.random(5)  # noise drawn during the run
     hub.queue(referee, "simulationReset", ())
     assert hub.flush().reset
     assert sim.time_ms == 0.0
     assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([1, 1, 0.05], abs=1e-12)
     driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
     assert hub.call(referee, "node.getPosition", (driver["id"],))[:2] == pytest.approx([-3, -3], abs=1e-9)
+    # The random numbers (sensor noise) start over too, as Webots resets its seeds.
+    assert sim.rng.random() == np.random.default_rng(sim.seed).random()
 
 
 def test_proto_internals_through_base_fields_and_proto_defs(hub):

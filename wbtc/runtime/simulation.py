@@ -59,8 +59,8 @@ class Simulation:
         self.time_ms = 0.0
         self.step_ms = float(self.table.basic_time_step)
         self.substeps = int(self.table.substeps)
-        seed = self.table.random_seed if seed is None else seed
-        self.rng = np.random.default_rng(max(int(seed), 0))
+        self.seed = max(int(self.table.random_seed if seed is None else seed), 0)
+        self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if noise else None
         self.rays = RayCaster(self.model, self.data)
         self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
@@ -135,6 +135,11 @@ class Simulation:
             robot.distance += math.dist(pos, robot.last_pos)
             robot.last_pos = pos
         self.keys_down = []
+
+    def reseed(self) -> None:
+        """Start the random numbers (sensor noise) over, as Webots does at a reset."""
+        self.rng = np.random.default_rng(self.seed)
+        self.noise_rng = self.rng if self.noise_rng is not None else None
 
     def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False) -> Offscreen:
         """The offscreen renderer for one image size and quality (made once, freed by `close`)."""

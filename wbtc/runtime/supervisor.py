@@ -393,6 +393,7 @@ class SupervisorHub:
         swap_model(self.sim, result, keep_time=False)
         self.sim.time_ms = 0.0
         self.sim.labels = {}
+        self.sim.reseed()  # Webots resets its random seeds with the simulation
         mujoco.mj_forward(self.sim.model, self.sim.data)
         if self.states_world != self.world:  # another world (worldLoad): its own "__init__", no saved states
             self.states, self.states_world = {"__init__": states.capture(self.sim, 0)}, self.world
