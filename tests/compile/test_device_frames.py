@@ -71,3 +71,31 @@ def test_a_merged_led_lights_only_its_own_shapes(compiled):
     assert led.geoms == ["bot/led/shape0"]
     geom = result.model.geom("bot/led/shape0").id
     assert data.geom_xpos[geom] == pytest.approx([1.0, 2.0, 0.14], abs=1e-6)
+
+
+def test_joint_devices_come_before_their_end_point_devices_as_in_webots(tmp_path):
+    # getDeviceByIndex order: a Joint's `device` field comes before its `endPoint`, a Hinge2Joint's
+    # `device2` after it (the fields' order in Webots' node definitions).
+    world = tmp_path / "order.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+Robot {
+  children [
+    Hinge2Joint {
+      device [ RotationalMotor { name "m1" } ]
+      device2 [ RotationalMotor { name "m2" } ]
+      endPoint Solid {
+        children [
+          HingeJoint {
+            device [ PositionSensor { name "inner sensor" } ]
+            endPoint Solid { children [ DistanceSensor { name "tip" } ] physics Physics { } }
+          }
+        ]
+        physics Physics { }
+      }
+    }
+    LED { name "led" }
+  ]
+}
+""", encoding="utf-8")
+    result, _ = compile_world(world)
+    assert [d.name for d in result.table.robots[0].devices] == ["m1", "inner sensor", "tip", "m2", "led"]

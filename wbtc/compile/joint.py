@@ -55,7 +55,27 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
                                                                                             "HingeJointParameters")
     if isinstance(first, Node):
         ctx.unhonoured(first, _UNHONOURED)
+    mark = len(robot.devices) if robot is not None else 0
     child = builder.add_solid(end, body, frame, robot, dynamic, joint_frame=frame)
+    below = len(robot.devices) if robot is not None else 0
+    first_count = _add_joints(builder, node, kind, child, frame, robot, first, first_type)
+    if robot is not None:
+        # Webots lists a joint's `device`s before its endPoint's devices (the field comes first; a
+        # Hinge2Joint's `device2` comes after): the order of getDeviceByIndex. They can only be made
+        # once the endPoint's body exists, so they are moved into place.
+        own = robot.devices[below:below + first_count]
+        del robot.devices[below:below + first_count]
+        robot.devices[mark:mark] = own
+
+
+def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBody, frame: Frame,
+                robot: RobotEntry | None, first: object, first_type: str) -> int:
+    """The MuJoCo joint(s) of a Joint node on its endPoint's body, with their devices.
+
+    Returns:
+        How many devices the first axis (the `device` field) gave the robot.
+    """
+    ctx = builder.ctx
     child_pose = Frame(np.asarray(child.pos, dtype=float), np.asarray(child.quat, dtype=float), np.ones(3))
     anchor = frame.apply(np.asarray(param(first, first_type, "anchor") if kind != "SliderJoint" else [0, 0, 0],
                                     dtype=float))
@@ -66,11 +86,13 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
         joint = _make(child, node, ctx, mujoco.mjtJoint.mjJNT_BALL, child_pose, anchor, None, first, first_type)
         if any(node.get(f) for f in ("device", "device2", "device3")):
             ctx.warn("motors and sensors on a BallJoint are not supported by wbtc yet", node.span)
-        return
+        return 0
     axes.append((first, first_type, "device"))
     if kind == "Hinge2Joint":
         axes.append((node.get("jointParameters2"), "JointParameters", "device2"))
     joint_type = mujoco.mjtJoint.mjJNT_SLIDE if kind == "SliderJoint" else mujoco.mjtJoint.mjJNT_HINGE
+    start = len(robot.devices) if robot is not None else 0
+    first_count = 0
     for index, (params, params_type, device_field) in enumerate(axes, start=1):
         axis = frame.rotate(np.asarray(param(params, params_type, "axis"), dtype=float))
         joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
@@ -80,6 +102,9 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
         for dev in node.get(device_field) or []:
             if isinstance(dev, Node) and robot is not None:
                 device.add_joint_device(dev, joint, child, robot, ctx, position, index)
+        if index == 1 and robot is not None:
+            first_count = len(robot.devices) - start
+    return first_count
 
 
 def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjtJoint, child_pose: Frame,
