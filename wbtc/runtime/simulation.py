@@ -8,6 +8,7 @@ one generator seeded by WorldInfo.randomSeed (or the seed given), so runs repeat
 from __future__ import annotations
 
 import math
+import sys
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -66,6 +67,7 @@ class Simulation:
         self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
         self.keys_down: list[int] = []
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
+        self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
@@ -110,6 +112,8 @@ class Simulation:
             for motor in robot.motors.values():
                 motor.update(self.model, self.data, ts)
         mujoco.mj_step(self.model, self.data, nstep=self.substeps)
+        if self.data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number and self.unstable_at is None:
+            self._report_instability()
         # mj_step leaves poses and velocities derived from the state before its last integration
         # (one substep old); sensors, the supervisor and rays must see the state the step ended in.
         mujoco.mj_kinematics(self.model, self.data)
@@ -135,6 +139,15 @@ class Simulation:
             robot.distance += math.dist(pos, robot.last_pos)
             robot.last_pos = pos
         self.keys_down = []
+
+    def _report_instability(self) -> None:
+        """Say once that the physics blew up: MuJoCo then puts the whole state back to its start."""
+        self.unstable_at = (self.time_ms + self.step_ms) / 1000.0  # the step that just ran
+        dof = int(self.data.warning[mujoco.mjtWarning.mjWARN_BADQACC].lastinfo)
+        body = self.model.body(int(self.model.dof_bodyid[dof])).name if 0 <= dof < self.model.nv else "?"
+        print(f"wbtc: warning: the physics became unstable near t = {self.unstable_at:.3f} s (body {body!r}); "
+              "MuJoCo restarted the bodies from their initial state (a smaller --physics-step may help)",
+              file=sys.stderr)
 
     def reseed(self) -> None:
         """Start the random numbers (sensor noise) over, as Webots does at a reset."""
