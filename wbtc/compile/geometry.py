@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wbtc.compile import meshes
+from wbtc.compile import faceset, heightfield, meshes
 from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import LEGACY_PRIMITIVE_QUAT, Frame, quat_mul, quat_to_mat
 from wbtc.scene.model import Node
@@ -177,7 +177,10 @@ def _cone(node: Node, frame: Frame, ctx: CompileContext, scale: np.ndarray) -> G
 
 def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool) -> GeomSpec | None:
     found: list = []
-    data = meshes.indexed_face_set(node, found) if node.base_type == "IndexedFaceSet" else meshes.mesh_file(node, found)
+    if node.base_type == "IndexedFaceSet":
+        data = faceset.indexed_face_set(node, found)
+    else:
+        data = meshes.mesh_file(node, found)
     ctx.warnings.extend(found)
     if data is None or len(data.faces) == 0:
         if node.base_type == "Mesh":
@@ -203,7 +206,7 @@ def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool) -> Geom
 def _hfield(node: Node, frame: Frame, ctx: CompileContext) -> GeomSpec | None:
     legacy = ctx.legacy_axes(node)
     found: list = []
-    grid = meshes.elevation_grid(node, legacy, found)
+    grid = heightfield.elevation_grid(node, legacy, found)
     ctx.warnings.extend(found)
     if grid is None:
         return None
