@@ -28,11 +28,9 @@ from wbtc.proto.template_common import (
     TemplateOutput,
     TemplateSyntaxError,
     context_values,
-    is_procedural,
     proto_error,
-    split_template,
-    strip_lua_vrml_comments,
 )
+from wbtc.proto.template_split import is_procedural, split_template, strip_lua_vrml_comments
 
 __all__ = [
     "DEFAULT_WEBOTS_VERSION",
