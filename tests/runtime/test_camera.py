@@ -157,3 +157,36 @@ def test_culled_geoms_leave_camera_and_viewpoint_images_unchanged():
     assert np.array_equal(big.draw(data, viewpoint), big_full.draw(data, viewpoint))
     for renderer in (culled, full, big, big_full):
         renderer.close()
+
+
+def _lit_level(tmp_path, light: str) -> int:
+    """The level of a grey box's top seen from above, lit by `light` alone (no sky, no headlight)."""
+    world = tmp_path / "lit.wbt"
+    world.write_text(f"""#VRML_SIM R2025a utf8
+WorldInfo {{ basicTimeStep 16 }}
+Viewpoint {{ orientation 0 1 0 1.5707963 position 0 0 3 }}
+Background {{ skyColor [ 0 0 0 ] }}
+{light}
+Solid {{
+  children [ Shape {{ appearance Appearance {{ material Material {{ diffuseColor 0.5 0.5 0.5 }} }}
+                     geometry Box {{ size 1 1 0.1 }} }} ]
+}}
+""", encoding="utf-8")
+    result, _ = compile_world(world)
+    model, data = result.model, mujoco.MjData(result.model)
+    mujoco.mj_forward(model, data)
+    renderer = Offscreen(model, 64, 48)
+    level = int(renderer.draw(data, model.camera("viewpoint").id)[24, 32, 0])
+    renderer.close()
+    return level
+
+
+def test_point_lights_keep_intensities_above_one_their_attenuation_divides(tmp_path):
+    # Webots worlds light rooms with PointLights of intensity 10 or 16 and 1/d² attenuation: 2 m above
+    # the box, intensity 4 with attenuation (0, 0, 1) lights it as intensity 1 without fall-off does.
+    plain = _lit_level(tmp_path, "PointLight { location 0 0 2.05 attenuation 1 0 0 intensity 1 ambientIntensity 0 }")
+    far = _lit_level(tmp_path, "PointLight { location 0 0 2.05 attenuation 0 0 1 intensity 4 ambientIntensity 0 }")
+    brighter = _lit_level(tmp_path, "PointLight { location 0 0 2.05 attenuation 0 0 1 intensity 6 ambientIntensity 0 }")
+    assert 20 < plain < 200
+    assert far == pytest.approx(plain, abs=3)
+    assert brighter > far + 10

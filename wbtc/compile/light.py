@@ -38,8 +38,13 @@ def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContex
     light.info = info(node)
     colour = np.asarray(node.get("color"), dtype=float)
     intensity = float(node.get("intensity"))
-    light.diffuse = np.clip(colour * intensity, 0.0, 1.0)
-    light.specular = np.clip(colour * intensity * 0.3, 0.0, 1.0)
+    # MuJoCo's renderer has no tone mapping: a directional light above 1 (a TexturedBackgroundLight's
+    # sun is 2.7, meant for Webots' exposure curve) would saturate everything, so it is capped at 1.
+    # Point and spot lights are not: their attenuation divides the intensity (worlds write 10 or 16
+    # with 1/d² fall-off), and MuJoCo scales by a diffuse above 1 as Webots does.
+    cap = 1.0 if kind == "DirectionalLight" else math.inf
+    light.diffuse = np.clip(colour * intensity, 0.0, cap)
+    light.specular = np.clip(colour * intensity * 0.3, 0.0, cap)
     light.ambient = np.clip(colour * float(node.get("ambientIntensity")) * MATERIAL_AMBIENT, 0.0, 1.0)
     light.castshadow = bool(node.get("castShadows"))
     if kind == "DirectionalLight":
