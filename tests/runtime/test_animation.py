@@ -90,3 +90,18 @@ def test_a_supervisor_records_a_page_that_plays_its_run(tmp_path):
     # Played to the end, the player stops there and offers to play again.
     ended = _play(page, 1.5)
     assert ended["play"] == "Play" and ended["frame"] == len(times) - 1 and ended["clock"] == f"{times[-1]:.2f} s"
+
+
+def test_a_geom_colour_change_is_recorded_once(tmp_path):
+    scene, _ = load_world(FIXTURES / "referee.wbt")
+    sim = Simulation(compile_scene(scene), noise=False)
+    recorder = AnimationRecorder(sim, tmp_path / "a.html")
+    index = next(i for i, g in enumerate(recorder.geoms) if sim.model.geom_bodyid[g] == sim.model.body("BALL").id)
+    sim.model.geom_rgba[recorder.geoms[index]] = [0.0, 1.0, 0.0, 1.0]  # what an LED does to its shapes
+    for _ in range(4):
+        sim.step()
+        recorder(sim)
+    recorder.close()
+    sim.close()
+    colours = [f.get("c") for f in _data(tmp_path / "a.html")["frames"]]
+    assert colours == [None, [[index, 0.0, 1.0, 0.0, 1.0]], None]

@@ -56,7 +56,9 @@ class AnimationRecorder:
         self.ids = [sim.model.body(name).id for name in self.names]
         self.frames: list[dict[str, Any]] = []
         self.last_poses: dict[int, list[float]] = {}
-        self.last_rgba = np.array([self.scene["geoms"][i]["rgba"] for i in range(len(self.geoms))])
+        # What the run changes is a geom's own rgba (LEDs); materials stay. Frames compare those raw
+        # values and resolve the drawn colour (material, texture mean) only for the geoms that changed.
+        self.raw_rgba = np.array(sim.model.geom_rgba[self.geoms])
         self.last_labels: dict[str, list] = {}
         self(sim)
 
@@ -100,14 +102,14 @@ class AnimationRecorder:
         return changed
 
     def _colours(self, sim: Simulation) -> list[list[float]]:
+        if not self.geoms or self.geoms[0] < 0:  # no geoms, or no longer followed (see _follow)
+            return []
+        current = sim.model.geom_rgba[self.geoms]
         changed = []
-        for index, geom in enumerate(self.geoms):
-            if geom < 0:
-                continue
-            rgba = _rgba(sim.model, geom)
-            if not np.allclose(rgba, self.last_rgba[index], atol=1e-4):
-                self.last_rgba[index] = rgba
-                changed.append([index, *(round(float(v), 4) for v in rgba)])
+        for index in np.flatnonzero(np.abs(current - self.raw_rgba).max(axis=1) > 1e-4):
+            self.raw_rgba[index] = current[index]
+            rgba = _rgba(sim.model, self.geoms[index])
+            changed.append([int(index), *(round(float(v), 4) for v in rgba)])
         return changed
 
     def close(self) -> None:

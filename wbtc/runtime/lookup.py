@@ -19,21 +19,18 @@ class LookupTable:
 
     def __init__(self, rows: list | np.ndarray | None) -> None:
         table = np.asarray(rows if rows is not None else [], dtype=float).reshape(-1, 3)
-        self.inputs = table[:, 0].copy()
-        self.outputs = table[:, 1].copy()
-        self.noises = table[:, 2].copy()
-        # Plain lists for __call__: bisect on a few floats beats numpy's per-call overhead.
-        self._in, self._out, self._noise = self.inputs.tolist(), self.outputs.tolist(), self.noises.tolist()
+        # Plain lists: bisect on a few floats beats numpy's per-call overhead.
+        self._in, self._out, self._noise = (table[:, k].tolist() for k in range(3))
 
     @property
     def empty(self) -> bool:
         """True when the table has no rows (values pass through)."""
-        return len(self.inputs) == 0
+        return not self._in
 
     @property
     def max_input(self) -> float:
         """The largest input: a distance sensor's range."""
-        return float(self.inputs.max()) if len(self.inputs) else 0.0
+        return max(self._in) if self._in else 0.0
 
     def __call__(self, x: float) -> tuple[float, float]:
         """Output and relative noise for input `x`."""
