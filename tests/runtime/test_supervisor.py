@@ -77,9 +77,20 @@ def test_simulation_reset_restores_poses_and_time(tmp_path):
     assert [float(v) for v in reset.group(2).split(",")] == pytest.approx([1, 1, 0.05], abs=1e-9)
     assert [float(v) for v in reset.group(3).split(",")][:2] == pytest.approx([-3, -3], abs=2e-3)
     # Time went back to 0 at 1.008 s and --duration counts all simulated time: the clock ends at about
-    # 0.5 s. The driver's controller was restarted, so it drove 0.5 s at 6.28 rad/s on 0.02 m wheels.
+    # 0.5 s. The driver's controller started over with the reset (the referee did not restart it), so
+    # it drove 0.5 s at 6.28 rad/s on 0.02 m wheels; left running, it would not have set its wheels again.
     assert data["sim_time"] == pytest.approx(1.5 - 1.008, abs=0.016)
     assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 0.5, abs=0.01)
+    # The referee itself went on (started over, it would have moved the box again and printed twice).
+    assert output.count("[referee] moved") == 1 and output.count("[referee] reset") == 1
+
+
+def test_restart_controller_runs_it_again_with_new_arguments(tmp_path):
+    code, data, output = _run(_world(tmp_path, "restart"), "--duration", "1.5")
+    assert code == 0, output
+    # Restarted at 0.5 s with "drive 0.6 s" (it had 100 s), the driver stops at 0.6 s: 0.6 s of driving
+    # at 6.28 rad/s on 0.02 m wheels, where the first run would have gone on for 1.5 s.
+    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 0.6, abs=0.01)
 
 
 def test_movie_recording_from_a_supervisor(tmp_path):

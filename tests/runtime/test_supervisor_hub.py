@@ -127,7 +127,10 @@ def test_simulation_reset_restores_the_initial_state(hub):
         sim.step()
     sim.rng.random(5)  # noise drawn during the run
     hub.queue(referee, "simulationReset", ())
-    assert hub.flush().reset
+    outcome = hub.flush()
+    assert outcome.reset
+    # Every other robot's controller starts over; the calling supervisor's goes on.
+    assert [robot.entry.name for robot in outcome.restart] == ["driver"]
     assert sim.time_ms == 0.0
     assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([1, 1, 0.05], abs=1e-12)
     driver = hub.call(referee, "getFromDef", ("DRIVER", -1))

@@ -9,7 +9,11 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   changed is expanded anew), then the running state is carried over (see `rebuild`);
 - `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
   takes a node out; both recompile, and the runner starts or stops the robots' controllers;
-- `simulationReset` reloads the world file (time 0; controllers keep running, as in Webots);
+- `simulationReset` reloads the world file (time 0) and starts every other robot's controller
+  over, as Webots' Reset button does, so that the reset world runs as it did from the start; the
+  calling supervisor keeps running (started over, it would reset again and again). Webots' API call
+  itself leaves every controller running and expects `restartController`, which here just starts
+  that controller over once more;
   `worldReload` does the same and restarts every controller, the calling supervisor's included;
   `simulationQuit(status)` ends the run with that exit code.
 
@@ -251,8 +255,9 @@ class SupervisorHub:
         sim = self.sim
         if op == "simulationQuit":
             self.quit_status = int(args[0])
-        elif op == "simulationReset":
+        elif op == "simulationReset":  # the other controllers start over; the caller goes on
             outcome.reset = True
+            outcome.restart += [other for other in sim.robots if other is not robot]
         elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
             outcome.reset = True
             outcome.restart += list(sim.robots)
