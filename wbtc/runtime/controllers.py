@@ -22,6 +22,7 @@ import subprocess
 import sys
 import tempfile
 import threading
+import time
 from pathlib import Path
 from typing import IO, Any
 
@@ -151,8 +152,13 @@ class ControllerProcess:
         self.closed = True
         if self.process is None:
             return None
+        # The output pipes close when the process exits: waiting for the forwarding threads first sees
+        # that at once, where Popen.wait(timeout) polls with growing sleeps (up to 4 ms late at exit).
+        deadline = time.monotonic() + timeout
+        for thread in self._threads:
+            thread.join(timeout=max(deadline - time.monotonic(), 0.0))
         try:
-            code = self.process.wait(timeout=timeout)
+            code = self.process.wait(timeout=max(deadline - time.monotonic(), 0.0))
         except subprocess.TimeoutExpired:
             self.process.kill()
             code = self.process.wait()

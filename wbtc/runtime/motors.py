@@ -57,6 +57,8 @@ class Motor:
         self.feedback_period = 0  # torque/force feedback sampling period, ms (0: disabled)
         self.feedback_due = math.inf
         self.feedback_value: float | None = None  # sampled since the last reply, else None
+        # The servo gain last written into a model (and that model): rewritten only when it changes.
+        self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
 
     def apply(self, op: str, args: tuple, now_ms: float = 0.0) -> None:
         """One command from the controller (`now_ms`: when it applies, for feedback sampling)."""
@@ -95,6 +97,7 @@ class Motor:
             model.actuator_gainprm[a, 0] = 1.0
             model.actuator_biasprm[a, 2] = 0.0
             model.dof_armature[self.dof_adr] = 0.0  # Webots joints have none; it only served the servo
+            self._written = (None, math.nan)
             data.ctrl[a] = self.torque
             return
         if math.isinf(self.target):
@@ -112,10 +115,12 @@ class Motor:
             wanted = min(max(wanted, self.command - step), self.command + step)
         self.command = wanted
         self._limit_gain(data, wanted)
-        model.actuator_gainprm[a, 0] = self.gain
-        model.actuator_biasprm[a, 2] = -self.gain
-        # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
-        model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
+        if self._written[0] is not model or self._written[1] != self.gain:
+            model.actuator_gainprm[a, 0] = self.gain
+            model.actuator_biasprm[a, 2] = -self.gain
+            # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
+            model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
+            self._written = (model, self.gain)
         data.ctrl[a] = wanted
 
     def _limit_gain(self, data: mujoco.MjData, wanted: float) -> None:

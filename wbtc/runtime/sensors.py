@@ -91,23 +91,26 @@ class DistanceSensor(Sensor):
         self.table = LookupTable(f.get("lookupTable"))
         self.kind = str(f.get("type", "generic"))
         self.resolution = float(f.get("resolution", -1))
-        self.dirs, self.weights = ray_pattern(int(f.get("numberOfRays", 1)), float(f.get("aperture", 1.5708)),
-                                              float(f.get("gaussianWidth", 1.0)))
+        dirs, weights = ray_pattern(int(f.get("numberOfRays", 1)), float(f.get("aperture", 1.5708)),
+                                    float(f.get("gaussianWidth", 1.0)))
         if self.kind == "laser":
-            self.dirs, self.weights = self.dirs[:1], np.array([1.0])
+            dirs, weights = dirs[:1], np.array([1.0])
+        # (direction in the sensor frame, weight) pairs as a plain list: iterating numpy rows and
+        # scalars at every sample costs more than the ray cast itself.
+        self.rays = [(direction, float(weight)) for direction, weight in zip(dirs, weights, strict=True)]
         self.range = self.table.max_input
 
     def sample(self, sim: Simulation) -> float:
         """Distance from the rays, then the lookup table."""
         pos, mat = self.frame(sim)
-        infra_red = self.kind == "infra-red"
+        infra_red, sonar = self.kind == "infra-red", self.kind == "sonar"
         num = den = 0.0
         nearest = math.inf
-        for direction, weight in zip(self.dirs, self.weights, strict=True):
+        for direction, weight in self.rays:
             world_dir = mat @ direction
             dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies, self.body)
             # A sonar echo returns only when the ray meets the surface within π/8 of its normal.
-            if self.kind == "sonar" and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
+            if sonar and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
                 dist = math.inf
             hit = math.isfinite(dist)
             nearest = min(nearest, dist)

@@ -26,6 +26,8 @@ from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
 from wbtc.runtime.surface import SurfaceColours
 
+_BADQACC = int(mujoco.mjtWarning.mjWARN_BADQACC)
+
 
 @dataclass
 class RobotState:
@@ -108,18 +110,19 @@ class Simulation:
     def step(self) -> None:
         """Advance one basic time step."""
         ts = self.step_ms / 1000.0
+        model, data = self.model, self.data
         for robot in self.robots:
             for motor in robot.motors.values():
-                motor.update(self.model, self.data, ts)
-        mujoco.mj_step(self.model, self.data, nstep=self.substeps)
-        if self.data.warning[mujoco.mjtWarning.mjWARN_BADQACC].number and self.unstable_at is None:
+                motor.update(model, data, ts)
+        mujoco.mj_step(model, data, nstep=self.substeps)
+        if self.unstable_at is None and data.warning[_BADQACC].number:
             self._report_instability()
         # mj_step leaves poses and velocities derived from the state before its last integration
         # (one substep old); sensors, the supervisor and rays must see the state the step ended in.
-        mujoco.mj_kinematics(self.model, self.data)
-        mujoco.mj_comPos(self.model, self.data)
-        mujoco.mj_camlight(self.model, self.data)
-        mujoco.mj_comVel(self.model, self.data)
+        mujoco.mj_kinematics(model, data)
+        mujoco.mj_comPos(model, data)
+        mujoco.mj_camlight(model, data)
+        mujoco.mj_comVel(model, data)
         self.time_ms += self.step_ms
         if self.packets:
             receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]

@@ -9,12 +9,12 @@ from __future__ import annotations
 import atexit
 import sys
 import weakref
-from collections.abc import Callable
 
 from .wire import Wire, WireClosed
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    from collections.abc import Callable
     from typing import Any
 
 NAN = float("nan")

@@ -122,9 +122,15 @@ from __future__ import annotations
 
 import io
 import os
-import pickle
-import socket
 import struct
+
+# The C modules behind `pickle` and `socket`: the same Unpickler and socket objects, without importing
+# `re` (pickle) and `enum`/`functools` (socket), which cost a controller's start-up about 8 ms.
+try:
+    import _pickle as pickle
+except ImportError:  # a Python without the C accelerator
+    import pickle  # type: ignore[no-redef]
+import _socket as socket
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
@@ -207,7 +213,7 @@ class Wire:
         fd = env.get("WBTC_CONTROLLER_FD")
         if fd:
             sock = socket.socket(fileno=int(fd))
-            sock.set_inheritable(False)
+            os.set_inheritable(sock.fileno(), False)
             return cls(sock)
         url = env.get("WBTC_CONTROLLER_URL")
         if url:
