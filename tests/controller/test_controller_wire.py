@@ -40,6 +40,35 @@ def test_frames_naming_globals_are_refused() -> None:
         wire.decode(pickle.dumps(complex(1, 2), protocol=4))
 
 
+def test_numpy_values_and_builtin_subclasses_travel_as_plain_builtins() -> None:
+    import enum
+
+    import numpy as np
+
+    class Channel(enum.IntEnum):
+        TWO = 2
+
+    class Name(str, enum.Enum):  # noqa: UP042 (the mixin whose str() is "Name.LEFT", not its value)
+        LEFT = "left"
+
+    message = ("step", 32, [(0, "setVelocity", np.float64(1.5)), (-1, "field.set", 4, -1, list(np.arange(3.0))),
+                            (2, "setChannel", Channel.TWO), (-1, "setCustomData", Name.LEFT),
+                            (3, "send", np.frombuffer(b"ab", dtype=np.uint8)), (4, "pose", np.eye(2))])
+    decoded = wire.decode(wire.encode(message)[4:])
+    assert decoded == ("step", 32, [(0, "setVelocity", 1.5), (-1, "field.set", 4, -1, [0.0, 1.0, 2.0]),
+                                    (2, "setChannel", 2), (-1, "setCustomData", "left"), (3, "send", [97, 98]),
+                                    (4, "pose", [[1.0, 0.0], [0.0, 1.0]])])
+    assert [type(v) for v in (decoded[2][0][2], decoded[2][2][2], decoded[2][3][2])] == [float, int, str]
+    # A plain message is pickled once, as is: the byte 0x93 inside data does not make it "not plain".
+    assert wire.encode((b"\x93", "\x93")) == wire.encode((b"\x93", "\x93"))
+    assert wire.decode(wire.encode((b"\x93", "\x93"))[4:]) == (b"\x93", "\x93")
+
+
+def test_values_that_cannot_be_made_plain_are_refused_by_the_sender() -> None:
+    with pytest.raises(TypeError, match="not plain data"):
+        wire.encode(("step", 32, [(0, "setVelocity", complex(1, 2))]))
+
+
 @pytest.mark.parametrize(
     ("url", "expected"),
     [

@@ -8,6 +8,7 @@ import threading
 import time
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -111,3 +112,43 @@ def test_torque_feedback_of_a_motor_holding_an_arm_against_gravity():
     # motor's is the opposite.
     assert abs(value + 0.1962) < 0.005
     assert "period 16" in output
+
+
+NUMPY_SUPERVISOR = '''import numpy as np
+from controller import Supervisor
+sup = Supervisor()
+light = sup.getFromDef("LIGHT")
+light.getField("intensity").setSFFloat(np.float64(0.5))
+light.getField("location").setSFVec3f(list(np.array([1.0, 2.0, 3.0])))
+sup.step(16)
+print("read", light.getField("intensity").getSFFloat(), light.getField("location").getSFVec3f())
+'''
+
+RAW_SENDER = '''import os, socket, struct
+sock = socket.socket(fileno=int(os.environ["WBTC_CONTROLLER_FD"]))
+sock.recv(65536)  # the init frame
+payload = b"\\x80\\x04\\x95\\x00"  # a truncated pickle: not a frame the simulator can read
+sock.sendall(struct.pack("<I", len(payload)) + payload)
+sock.recv(1)  # the simulator closes the connection
+'''
+
+
+def test_numpy_numbers_from_a_controller_reach_the_world_as_numbers(tmp_path):
+    # Webots' API takes numpy floats and lists of them where it takes floats; so does wbtc's wire.
+    (tmp_path / "sup.py").write_text(NUMPY_SUPERVISOR, encoding="utf-8")
+    world = tmp_path / "w.wbt"
+    world.write_text("#VRML_SIM R2023b utf8\nWorldInfo { basicTimeStep 16 }\n"
+                     "DEF LIGHT PointLight { intensity 1 location 0 0 1 }\n"
+                     'Robot { name "sup" supervisor TRUE controller "sup" }\n', encoding="utf-8")
+    data, output = _run(world, "--duration", "0.1")
+    assert "[sup] read 0.5 [1.0, 2.0, 3.0]" in output
+    assert data["robots"][0]["status"] == "exited"
+
+
+def test_an_unreadable_frame_cuts_its_controller_off_and_the_run_goes_on(tmp_path):
+    (tmp_path / "raw.py").write_text(RAW_SENDER, encoding="utf-8")
+    world = tmp_path / "w.wbt"
+    world.write_text(WORLD.format(controller="raw"), encoding="utf-8")
+    data, output = _run(world, "--duration", "0.2")
+    assert "[probe] wbtc: the controller sent a message that is not plain data" in output
+    assert data["sim_time"] == pytest.approx(0.208) and data["robots"][0]["status"] in ("exited", "crashed")

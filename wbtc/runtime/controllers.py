@@ -145,6 +145,11 @@ class ControllerProcess:
         except (WireClosed, OSError):
             self.closed = True
             return None
+        except Exception as exc:  # noqa: BLE001 (a frame that does not decode: the controller is cut off)
+            print(f"[{self.robot_name}] wbtc: the controller sent a message that is not plain data ({exc}); "
+                  "it is disconnected", file=sys.stderr, flush=True)
+            self.closed = True
+            return None
 
     def finish(self, timeout: float = 1.0) -> int | None:
         """Wait up to `timeout` s for the process to exit, then stop it; returns its exit code."""

@@ -149,10 +149,61 @@ class _BuiltinsOnly(pickle.Unpickler):
         raise pickle.UnpicklingError(f"wbtc wire: refusing to load {module}.{name}; frames hold builtins only")
 
 
+_STACK_GLOBAL = b"\x93"  # the opcode that names a class (protocol 4): what the other end refuses
+
+
 def encode(obj: Any) -> bytes:
-    """Return one frame (length header and pickle) for a message of builtins."""
-    payload = pickle.dumps(obj, protocol=PROTOCOL)
+    """Return one frame (length header and pickle) for a message of builtins.
+
+    Values that came from a controller's own code may be numpy numbers or arrays, or subclasses of
+    builtins: they are made plain first, as Webots' C library reads any number-like argument.
+
+    Raises:
+        TypeError: something in the message is not plain data and cannot be made so.
+    """
+    try:
+        payload = pickle.dumps(obj, protocol=PROTOCOL)
+        clean = _STACK_GLOBAL not in payload  # else maybe a class inside (or just that byte in some data)
+    except (pickle.PicklingError, AttributeError, TypeError):  # e.g. an instance of a local class
+        clean = False
+    if not clean:
+        try:
+            payload = pickle.dumps(plain(obj), protocol=PROTOCOL)
+        except (pickle.PicklingError, AttributeError, TypeError):
+            payload = b""
+        if not payload or (_STACK_GLOBAL in payload and _names_a_global(payload)):
+            raise TypeError("wbtc: a value passed to the controller API is not plain data "
+                            "(numbers, strings, bytes, lists, tuples, dicts, None)")
     return _HEADER.pack(len(payload)) + payload
+
+
+def plain(obj: Any) -> Any:
+    """`obj` with numpy numbers and arrays as Python numbers and lists, builtin subclasses as builtins."""
+    kind = type(obj)
+    if kind in (str, bytes, bool, int, float, type(None)):
+        return obj
+    if isinstance(obj, dict):
+        return {plain(key): plain(value) for key, value in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        items = [plain(value) for value in obj]
+        return items if isinstance(obj, list) else tuple(items)
+    tolist = getattr(obj, "tolist", None)
+    if callable(tolist) and kind.__module__.split(".")[0] == "numpy":
+        return plain(tolist())
+    for base in (bool, int, float, str, bytes):  # IntEnum members, float subclasses, ...
+        if isinstance(obj, base):
+            return base.__str__(obj) if base is str else base(obj)
+    if isinstance(obj, (bytearray, memoryview)):
+        return bytes(obj)
+    return obj
+
+
+def _names_a_global(payload: bytes) -> bool:
+    try:
+        decode(payload)
+    except pickle.UnpicklingError:
+        return True
+    return False
 
 
 def decode(payload: bytes) -> Any:
