@@ -44,6 +44,14 @@ def _run(world: Path, *args: str) -> tuple[dict, str]:
     return json.loads(result.stdout.strip().splitlines()[-1]), result.output
 
 
+def _flat(tmp_path: Path, controller: str, source: str, world: str | None = None) -> Path:
+    """A world file with its controller `controller`.py beside it (the flat layout)."""
+    (tmp_path / f"{controller}.py").write_text(source, encoding="utf-8")
+    path = tmp_path / "w.wbt"
+    path.write_text(world or WORLD.format(controller=controller), encoding="utf-8")
+    return path
+
+
 def test_project_layout_runtime_ini_arguments_and_working_directory(tmp_path):
     (tmp_path / "worlds").mkdir()
     folder = tmp_path / "controllers" / "probe"
@@ -58,9 +66,7 @@ def test_project_layout_runtime_ini_arguments_and_working_directory(tmp_path):
 
 
 def test_flat_layout_and_keys_replayed_at_their_times(tmp_path):
-    (tmp_path / "probe.py").write_text(PROBE, encoding="utf-8")
-    world = tmp_path / "w.wbt"
-    world.write_text(WORLD.format(controller="probe"), encoding="utf-8")
+    world = _flat(tmp_path, "probe", PROBE)
     keys = tmp_path / "keys.txt"
     keys.write_text("0.1 A\n0.3 UP\n", encoding="utf-8")
     _, output = _run(world, "--duration", "0.5", "--keys", str(keys))
@@ -135,20 +141,16 @@ sock.recv(1)  # the simulator closes the connection
 
 def test_numpy_numbers_from_a_controller_reach_the_world_as_numbers(tmp_path):
     # Webots' API takes numpy floats and lists of them where it takes floats; so does wbtc's wire.
-    (tmp_path / "sup.py").write_text(NUMPY_SUPERVISOR, encoding="utf-8")
-    world = tmp_path / "w.wbt"
-    world.write_text("#VRML_SIM R2023b utf8\nWorldInfo { basicTimeStep 16 }\n"
-                     "DEF LIGHT PointLight { intensity 1 location 0 0 1 }\n"
-                     'Robot { name "sup" supervisor TRUE controller "sup" }\n', encoding="utf-8")
+    world = _flat(tmp_path, "sup", NUMPY_SUPERVISOR, "#VRML_SIM R2023b utf8\nWorldInfo { basicTimeStep 16 }\n"
+                  "DEF LIGHT PointLight { intensity 1 location 0 0 1 }\n"
+                  'Robot { name "sup" supervisor TRUE controller "sup" }\n')
     data, output = _run(world, "--duration", "0.1")
     assert "[sup] read 0.5 [1.0, 2.0, 3.0]" in output
     assert data["robots"][0]["status"] == "exited"
 
 
 def test_an_unreadable_frame_cuts_its_controller_off_and_the_run_goes_on(tmp_path):
-    (tmp_path / "raw.py").write_text(RAW_SENDER, encoding="utf-8")
-    world = tmp_path / "w.wbt"
-    world.write_text(WORLD.format(controller="raw"), encoding="utf-8")
+    world = _flat(tmp_path, "raw", RAW_SENDER)
     data, output = _run(world, "--duration", "0.2")
     assert "[probe] wbtc: the controller sent a message that is not plain data" in output
     assert data["sim_time"] == pytest.approx(0.208) and data["robots"][0]["status"] in ("exited", "crashed")

@@ -9,12 +9,9 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   changed is expanded anew), then the running state is carried over (see `rebuild`);
 - `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
   takes a node out; both recompile, and the runner starts or stops the robots' controllers;
-- `simulationReset` reloads the world file (time 0) and starts every other robot's controller
-  over, as Webots' Reset button does, so that the reset world runs as it did from the start; the
-  calling supervisor keeps running (started over, it would reset again and again). Webots' API call
-  itself leaves every controller running and expects `restartController`, which here just starts
-  that controller over once more;
-  `worldReload` does the same and restarts every controller, the calling supervisor's included;
+- `simulationReset` reloads the world file (time 0) and starts every other robot's controller over,
+  as Webots' Reset button does (its API call leaves them running); the calling supervisor goes on
+  (started over, it would reset again and again); `worldReload` restarts every controller;
   `simulationQuit(status)` ends the run with that exit code.
 
 `simulationSetMode` is kept here and honoured by the runner; `animationStartRecording` writes a
