@@ -70,6 +70,7 @@ class Simulation:
         self.keys_down: list[int] = []
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
         self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
+        self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
@@ -115,8 +116,11 @@ class Simulation:
             for motor in robot.motors.values():
                 motor.update(model, data, ts)
         mujoco.mj_step(model, data, nstep=self.substeps)
-        if self.unstable_at is None and data.warning[_BADQACC].number:
-            self._report_instability()
+        if self.unstable_at is None:
+            if self._badqacc[0] is not data:  # the warning's live view, made once per MjData
+                self._badqacc = (data, data.warning[_BADQACC])
+            if self._badqacc[1].number:
+                self._report_instability()
         # mj_step leaves poses and velocities derived from the state before its last integration
         # (one substep old); sensors, the supervisor and rays must see the state the step ended in.
         mujoco.mj_kinematics(model, data)
