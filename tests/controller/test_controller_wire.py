@@ -7,6 +7,7 @@ import pickle
 import socket
 import struct
 import sys
+import threading
 
 import pytest
 from controller_sim import CHILD_PATH
@@ -27,6 +28,23 @@ def test_frames_round_trip_over_a_socket() -> None:
         a.close()
         with pytest.raises(wire.WireClosed):
             wire.recv_frame(b)
+
+
+def test_frame_reader_splits_joined_frames_and_joins_split_ones() -> None:
+    a, b = socket.socketpair()
+    with a, b:
+        reader = wire.FrameReader(b)
+        big = {"data": bytes(range(256)) * 1000}  # 256 kB: more than one recv brings
+        first, second = wire.encode(("step", 16, [])), wire.encode(big)
+        a.sendall(first + second[:3])  # two frames in one chunk, the second cut inside its header
+        assert reader.read() == ("step", 16, [])
+        sender = threading.Thread(target=lambda: [a.sendall(second[3:10]), a.sendall(second[10:])])
+        sender.start()
+        assert reader.read() == big
+        sender.join()
+        a.close()
+        with pytest.raises(wire.WireClosed):
+            reader.read()
 
 
 def test_frame_layout_is_a_little_endian_length_and_a_protocol_4_pickle() -> None:

@@ -26,7 +26,7 @@ import time
 from pathlib import Path
 from typing import IO, Any
 
-from wbtc._child.controller.wire import WireClosed, recv_frame, send_frame
+from wbtc._child.controller.wire import FrameReader, WireClosed, recv_frame, send_frame
 from wbtc.resources import child_path
 
 NO_CONTROLLER = frozenset({"", "<none>", "<generic>"})
@@ -69,6 +69,7 @@ class ControllerProcess:
                  label: str) -> None:
         self.robot_name = robot_name
         self.sock = sock
+        self.reader = FrameReader(sock)
         self.process = process
         self.label = label
         self.closed = False
@@ -141,7 +142,7 @@ class ControllerProcess:
         if self.closed:
             return None
         try:
-            return recv_frame(self.sock)
+            return self.reader.read()
         except (WireClosed, OSError):
             self.closed = True
             return None

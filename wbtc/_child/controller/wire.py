@@ -234,6 +234,42 @@ def recv_frame(sock: socket.socket) -> Any:
     return decode(_recv_exactly(sock, size))
 
 
+class FrameReader:
+    """Receives frames from one socket, a whole frame in one ``recv`` when it has all arrived.
+
+    Lockstep frames are small and arrive whole, so one system call usually brings header and payload
+    (``recv_frame`` makes two, and copies); bytes past the frame are kept for the next one.
+    """
+
+    _CHUNK = 1 << 16
+
+    def __init__(self, sock: socket.socket) -> None:
+        self.sock = sock
+        self._pending = b""
+
+    def read(self) -> Any:
+        """The next message; raises WireClosed when the peer has closed the connection."""
+        data = self._pending or self._more()
+        while len(data) < _HEADER.size:
+            data += self._more()
+        end = _HEADER.size + _HEADER.unpack_from(data)[0]
+        if len(data) < end:
+            parts, have = [data], len(data)
+            while have < end:
+                chunk = self._more(end - have)
+                parts.append(chunk)
+                have += len(chunk)
+            data = b"".join(parts)
+        self._pending = data[end:]
+        return decode(data[_HEADER.size:end])
+
+    def _more(self, wanted: int = 0) -> bytes:
+        chunk = self.sock.recv(max(wanted, self._CHUNK))
+        if not chunk:
+            raise WireClosed("the connection was closed")
+        return chunk
+
+
 def parse_url(url: str) -> tuple[str, str | None]:
     """Split ``unix:/path/to/socket[?robot=NAME]`` into the socket path and the robot name (or None)."""
     from urllib.parse import parse_qs, unquote  # only extern controllers need it
@@ -251,6 +287,7 @@ class Wire:
 
     def __init__(self, sock: socket.socket) -> None:
         self.sock = sock
+        self.reader = FrameReader(sock)
 
     @classmethod
     def from_environment(cls, environ: dict[str, str] | None = None) -> Wire | None:
@@ -282,7 +319,7 @@ class Wire:
 
     def recv(self) -> Any:
         """Receive one message (raises WireClosed at end of stream)."""
-        return recv_frame(self.sock)
+        return self.reader.read()
 
     def close(self) -> None:
         """Close the socket."""
