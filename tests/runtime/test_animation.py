@@ -105,3 +105,71 @@ def test_a_geom_colour_change_is_recorded_once(tmp_path):
     sim.close()
     colours = [f.get("c") for f in _data(tmp_path / "a.html")["frames"]]
     assert colours == [None, [[index, 0.0, 1.0, 0.0, 1.0]], None]
+
+
+def test_textured_geoms_carry_their_image_and_repeat(tmp_path):
+    import base64
+    import io
+
+    from PIL import Image
+
+    scene, _ = load_world(FIXTURES / "textured.wbt")
+    sim = Simulation(compile_scene(scene), noise=False)
+    recorder = AnimationRecorder(sim, tmp_path / "a.html")
+    recorder.close()
+    sim.close()
+    data = _data(tmp_path / "a.html")
+    # One image for the three shapes: ground_stripe.png (100 x 100) as a 128 x 128 PNG (WebGL 1 repeats
+    # only power-of-two textures).
+    assert len(data["textures"]) == 1 and data["textures"][0].startswith("data:image/png;base64,")
+    with Image.open(io.BytesIO(base64.b64decode(data["textures"][0].split(",", 1)[1]))) as image:
+        assert image.size == (128, 128)
+    textured = {g["type"]: g for g in data["geoms"] if "texture" in g}
+    assert sorted(textured) == ["box", "mesh", "plane"]
+    assert textured["box"]["texture"] == {"tex": 0, "repeat": [2.0, 1.0]}  # TextureTransform scale 2 1
+    assert textured["plane"]["texture"] == {"tex": 0, "repeat": [1.0, 1.0]}
+    # The colour is the material's own (white): the texture multiplies it in the player, not its mean.
+    assert textured["plane"]["rgba"] == [1.0, 1.0, 1.0, 1.0]
+    floor = data["meshes"][textured["mesh"]["mesh"]]
+    assert len(floor["uv"]) == 2 * len(floor["faces"])
+    assert max(floor["uv"]) == pytest.approx(2.0)  # two tiles along each side
+
+
+def test_the_player_maps_texture_coordinates_as_mujoco_does():
+    # The player computes a plane's and a box's texture coordinates in its vertex shader from the
+    # unit shape; here that arithmetic, fed with the player's own maps, against the coordinates that
+    # wbtc's infra-red rays read (runtime.surface, which follows MuJoCo's renderer).
+    import numpy as np
+
+    player = (Path(__file__).parents[2] / "wbtc" / "runtime" / "player" / "animation.js").read_text(encoding="utf-8")
+    context = quickjs.Context()
+    context.eval(player)
+    scene, _ = load_world(FIXTURES / "textured.wbt")
+    sim = Simulation(compile_scene(scene), noise=False)
+    model = sim.model
+    plane, box = (next(g for g in range(model.ngeom) if model.geom_type[g] == kind and model.geom_matid[g] >= 0)
+                  for kind in (0, 6))
+
+    def mapping(geom: int, kind: str) -> dict:
+        entry = {"type": kind, "size": model.geom_size[geom].tolist(),
+                 "texture": {"tex": 0, "repeat": model.mat_texrepeat[model.geom_matid[geom]].tolist()}}
+        return json.loads(context.eval(f"JSON.stringify(WbtcPlayer.texturing({json.dumps(entry)}))"))
+
+    a, b, c, d = mapping(plane, "plane")["map"]
+    size = model.geom_size[plane]
+    for x, y in [(-1, 1), (1, -1), (0.3, 0.2), (-0.7, -0.1)]:
+        expected = sim.surface._uv(plane, int(model.geom_matid[plane]), np.array([x * size[0], y * size[1], 0]))
+        assert [a * x + b, c * y + d] == pytest.approx(expected.tolist())
+    m = mapping(box, "box")["map"]
+    half = model.geom_size[box]
+    for unit in [(1, 0.2, -0.5), (-0.4, -1, 0.9), (0.1, 0.6, 1)]:
+        axis = int(np.argmax(np.abs(unit)))
+        p = [v for k, v in enumerate(unit) if k != axis]  # the face's two other axes, in order
+        expected = sim.surface._uv(box, int(model.geom_matid[box]), np.array(unit) * half)
+        assert [(p[0] + 1) / 2 * m[0], (1 - p[1]) / 2 * m[2]] == pytest.approx(expected.tolist())
+    # An infinite plane (size 0): half an image per metre, shifted by half an image, drawn 50 m wide.
+    infinite = {"type": "plane", "size": [0, 0, 1], "texture": {"tex": 0, "repeat": [1, 1]}}
+    a, b, c, d = json.loads(context.eval(f"JSON.stringify(WbtcPlayer.texturing({json.dumps(infinite)}).map)"))
+    # The unit point (0.02, 0.04) is (1 m, 2 m) on the 50 m wide drawing: u = 0.5 · 1 - 0.5, v = -0.5 · 2 - 0.5.
+    assert [a * 0.02 + b, c * 0.04 + d] == pytest.approx([0.5 * 1.0 - 0.5, -0.5 * 2.0 - 0.5])
+    sim.close()

@@ -8,9 +8,12 @@ primitives and meshes, with their colours), the pose of every body that carries 
 every basic time step, or every few steps so that they come at most 60 times a simulated second.
 Poses are in the model's frame (ENU, z up), whatever the world's own axes.
 
-Not honoured yet: textures (a textured material shows its texture's mean colour), the scene's
-lights (the player lights from the camera, with an ambient term), height fields, bodies a
-supervisor adds after the recording started (the ones it started with are followed by name).
+Textured planes, boxes and meshes carry their texture (see `animation_textures`); other textured
+geoms show the texture's mean colour.
+
+Not honoured yet: the scene's lights (the player lights from the camera, with an ambient term),
+height fields, bodies a supervisor adds after the recording started (the ones it started with are
+followed by name).
 """
 
 from __future__ import annotations
@@ -26,6 +29,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.context import VISUAL_GROUP
+from wbtc.runtime.animation_textures import Textures, mesh_uv
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -51,6 +55,7 @@ class AnimationRecorder:
         self.due_ms = sim.time_ms
         self.scene = _scene(sim)
         self.geoms = [int(g) for g in self.scene.pop("geom_ids")]
+        self.textured = {g for g, entry in zip(self.geoms, self.scene["geoms"], strict=True) if "texture" in entry}
         self.names: list[str] = self.scene["bodies"]
         self.generation = sim.generation
         self.ids = [sim.model.body(name).id for name in self.names]
@@ -108,7 +113,8 @@ class AnimationRecorder:
         changed = []
         for index in np.flatnonzero(np.abs(current - self.raw_rgba).max(axis=1) > 1e-4):
             self.raw_rgba[index] = current[index]
-            rgba = _rgba(sim.model, self.geoms[index])
+            geom = self.geoms[index]
+            rgba = _rgba(sim.model, geom, geom in self.textured)
             changed.append([int(index), *(round(float(v), 4) for v in rgba)])
         return changed
 
@@ -126,10 +132,14 @@ def _scene(sim: Simulation) -> dict[str, Any]:
     model = sim.model
     bodies: dict[int, int] = {}
     geoms, geom_ids, meshes = [], [], {}
+    textures = Textures(model)
     for g in range(model.ngeom):
         kind = _KINDS.get(int(model.geom_type[g]))
-        rgba = _rgba(model, g)
-        if int(model.geom_group[g]) != VISUAL_GROUP or kind is None or rgba[3] <= 0:
+        if int(model.geom_group[g]) != VISUAL_GROUP or kind is None:
+            continue
+        texture = textures.describe(g)
+        rgba = _rgba(model, g, texture is not None)
+        if rgba[3] <= 0:
             continue
         body = int(model.geom_bodyid[g])
         entry: dict[str, Any] = {
@@ -139,6 +149,8 @@ def _scene(sim: Simulation) -> dict[str, Any]:
             "quat": [round(float(v), 6) for v in model.geom_quat[g]],
             "rgba": [round(float(v), 4) for v in rgba],
         }
+        if texture is not None:
+            entry["texture"] = texture
         if kind == "mesh":
             mesh = int(model.geom_dataid[g])
             entry["mesh"] = meshes.setdefault(mesh, len(meshes))
@@ -151,20 +163,26 @@ def _scene(sim: Simulation) -> dict[str, Any]:
         "geoms": geoms,
         "geom_ids": geom_ids,
         "meshes": [_mesh(model, m) for m in sorted(meshes, key=meshes.get)],
+        "textures": textures.urls,
         "camera": _camera(sim),
         "background": [round(float(v), 4) for v in model.vis.rgba.haze[:3]],
     }
 
 
-def _rgba(model: mujoco.MjModel, geom: int) -> np.ndarray:
-    """The colour a geom is drawn with: its own, or its material's (times its texture's mean colour)."""
+def _rgba(model: mujoco.MjModel, geom: int, textured: bool = False) -> np.ndarray:
+    """The colour a geom is drawn with, as MuJoCo draws it.
+
+    Its own colour, unless that is the default and it has a material (then the material's); times the
+    material's texture, here its mean colour unless the player draws the texture itself (`textured`).
+    """
     rgba = np.array(model.geom_rgba[geom], dtype=float)
     mat = int(model.geom_matid[geom])
-    if mat < 0 or not np.allclose(rgba, _DEFAULT_RGBA):
+    if mat < 0:
         return rgba
-    rgba = np.array(model.mat_rgba[mat], dtype=float)
+    if np.allclose(rgba, _DEFAULT_RGBA):
+        rgba = np.array(model.mat_rgba[mat], dtype=float)
     tex = int(model.mat_texid[mat, int(mujoco.mjtTextureRole.mjTEXROLE_RGB)])
-    if tex >= 0:
+    if tex >= 0 and not textured:
         adr, channels = int(model.tex_adr[tex]), int(model.tex_nchannel[tex])
         size = int(model.tex_width[tex]) * int(model.tex_height[tex]) * channels
         texels = np.asarray(model.tex_data[adr:adr + size], dtype=float).reshape(-1, channels)
@@ -173,12 +191,13 @@ def _rgba(model: mujoco.MjModel, geom: int) -> np.ndarray:
 
 
 def _mesh(model: mujoco.MjModel, mesh: int) -> dict[str, list]:
-    """A mesh's vertices (in its geom's frame) and triangles, flattened."""
+    """A mesh's vertices (in its geom's frame) and triangles, flattened; its corners' texture coordinates."""
     vadr, vnum = int(model.mesh_vertadr[mesh]), int(model.mesh_vertnum[mesh])
     fadr, fnum = int(model.mesh_faceadr[mesh]), int(model.mesh_facenum[mesh])
     vertices = np.round(model.mesh_vert[vadr:vadr + vnum], 5).ravel().tolist()
     faces = model.mesh_face[fadr:fadr + fnum].ravel().astype(int).tolist()
-    return {"vertices": vertices, "faces": faces}
+    uv = mesh_uv(model, mesh)
+    return {"vertices": vertices, "faces": faces, **({"uv": uv} if uv is not None else {})}
 
 
 def _camera(sim: Simulation) -> dict[str, Any]:

@@ -3,6 +3,7 @@
  * The page holds the data as JSON (script#wbtc-animation): visual geoms attached to bodies, meshes,
  * and frames that carry the poses (position + quaternion w, x, y, z, z up) that changed since the
  * previous frame, LED colour changes and supervisor labels. Drawn with WebGL 1, lit from the camera.
+ * Textured planes, boxes and meshes get their texture coordinates as MuJoCo computes them.
  * Mouse: drag to turn around, shift-drag or right-drag to pan, wheel to zoom. Space plays/pauses.
  */
 "use strict";
@@ -59,7 +60,9 @@ var WbtcPlayer = (function () {
     return [a[0] / n, a[1] / n, a[2] / n];
   }
 
-  // ---- unit shapes as flat arrays of triangles: positions and normals ----
+  var INFINITE_PLANE = 50;  // half size drawn for an infinite plane (MuJoCo size 0), metres
+
+  // ---- unit shapes as flat arrays of triangles: positions and normals (meshes: and uvs) ----
   function box() {
     var p = [], n = [];
     var faces = [[0, 1], [0, -1], [1, 1], [1, -1], [2, 1], [2, -1]];
@@ -114,16 +117,17 @@ var WbtcPlayer = (function () {
   }
 
   function mesh(m) {
-    // Flat shading: every triangle gets its own normal.
-    var p = [], n = [], v = m.vertices, f = m.faces;
+    // Flat shading: every triangle gets its own normal; m.uv holds every face corner's (u, v).
+    var p = [], n = [], t = [], v = m.vertices, f = m.faces;
     for (var i = 0; i < f.length; i += 3) {
       var a = [v[3 * f[i]], v[3 * f[i] + 1], v[3 * f[i] + 2]];
       var b = [v[3 * f[i + 1]], v[3 * f[i + 1] + 1], v[3 * f[i + 1] + 2]];
       var c = [v[3 * f[i + 2]], v[3 * f[i + 2] + 1], v[3 * f[i + 2] + 2]];
       var nn = normalize(cross(sub(b, a), sub(c, a)));
       [a, b, c].forEach(function (q) { p.push(q[0], q[1], q[2]); n.push(nn[0], nn[1], nn[2]); });
+      for (var k = 0; k < 3; k++) t.push(m.uv ? m.uv[2 * (i + k)] : 0, m.uv ? m.uv[2 * (i + k) + 1] : 0);
     }
-    return {positions: p, normals: n};
+    return {positions: p, normals: n, uvs: t};
   }
 
   // The draw items of one geom: a shape and its local matrix (MuJoCo sizes are half sizes and radii).
@@ -139,10 +143,30 @@ var WbtcPlayer = (function () {
       case "cylinder": return [["cylinder", local([s[0], s[0], s[1]])]];
       case "capsule": return [["tube", local([s[0], s[0], s[1]])],
         ["top", local([s[0], s[0], s[0]], [0, 0, s[1]])], ["bottom", local([s[0], s[0], s[0]], [0, 0, -s[1]])]];
-      case "plane": return [["plane", local([s[0] > 0 ? s[0] : 50, s[1] > 0 ? s[1] : 50, 1])]];
+      case "plane": return [["plane", local([s[0] > 0 ? s[0] : INFINITE_PLANE, s[1] > 0 ? s[1] : INFINITE_PLANE, 1])]];
       case "mesh": return [["mesh" + geom.mesh, local([1, 1, 1])]];
     }
     return [];
+  }
+
+  // How a textured geom's unit shape maps to texture coordinates, as MuJoCo maps them (u right, v down
+  // from the image's top row): {mode: 1 plane, 2 box, 3 mesh, map: [a, b, c, d], tex: image index}.
+  // Plane: u = a x + b, v = c y + d over the unit square; a finite side spans the image once, an
+  // infinite one runs half an image per metre, shifted by half an image. Box: each face from its two
+  // other axes. Mesh: its own coordinates. All scaled by the repeat factors.
+  function texturing(geom) {
+    var t = geom.texture;
+    if (!t) return null;
+    var r = t.repeat, s = geom.size;
+    if (geom.type === "plane") {
+      var shift = s[0] > 0 && s[1] > 0 ? 0 : 0.5;
+      var a = s[0] > 0 ? 0.5 * r[0] : 0.5 * INFINITE_PLANE * r[0], b = (s[0] > 0 ? 0.5 * r[0] : 0) - shift;
+      var c = s[1] > 0 ? -0.5 * r[1] : -0.5 * INFINITE_PLANE * r[1], d = (s[1] > 0 ? 0.5 * r[1] : 0) - shift;
+      return {mode: 1, map: [a, b, c, d], tex: t.tex};
+    }
+    if (geom.type === "box") return {mode: 2, map: [r[0], 0, r[1], 0], tex: t.tex};
+    if (geom.type === "mesh") return {mode: 3, map: [r[0], 0, r[1], 0], tex: t.tex};
+    return null;
   }
 
   // Every frame's full state (poses, colours, labels), carrying forward what did not change.
@@ -174,13 +198,21 @@ var WbtcPlayer = (function () {
     return lo;
   }
 
-  var VERTEX = "attribute vec3 position; attribute vec3 normal; uniform mat4 mvp; uniform mat4 model;" +
-    "uniform mat3 normals; varying vec3 n; varying vec3 world;" +
+  // `mode` is declared mediump in both shaders: a uniform they share must have one precision.
+  var VERTEX = "attribute vec3 position; attribute vec3 normal; attribute vec2 uv; uniform mat4 mvp;" +
+    "uniform mat4 model; uniform mat3 normals; uniform mediump float mode; uniform vec4 uvMap;" +
+    "varying vec3 n; varying vec3 world; varying vec2 tc;" +
     "void main() { n = normals * normal; world = (model * vec4(position, 1.0)).xyz;" +
+    " if (mode < 1.5) { tc = vec2(uvMap.x * position.x + uvMap.y, uvMap.z * position.y + uvMap.w); }" +
+    " else if (mode < 2.5) { vec2 p = abs(normal.x) > 0.5 ? position.yz : (abs(normal.y) > 0.5 ? position.xz : position.xy);" +
+    "  tc = vec2((p.x + 1.0) * 0.5 * uvMap.x, (1.0 - p.y) * 0.5 * uvMap.z); }" +
+    " else { tc = uv * uvMap.xz; }" +
     " gl_Position = mvp * vec4(position, 1.0); }";
-  var FRAGMENT = "precision mediump float; uniform vec4 color; uniform vec3 eye; varying vec3 n; varying vec3 world;" +
+  var FRAGMENT = "precision mediump float; uniform vec4 color; uniform vec3 eye; uniform float mode;" +
+    "uniform sampler2D image; varying vec3 n; varying vec3 world; varying vec2 tc;" +
     "void main() { vec3 l = normalize(eye - world); float d = abs(dot(normalize(n), l));" +
-    " gl_FragColor = vec4(color.rgb * (0.35 + 0.65 * d), color.a); }";
+    " vec3 base = mode > 0.5 ? color.rgb * texture2D(image, tc).rgb : color.rgb;" +
+    " gl_FragColor = vec4(base * (0.35 + 0.65 * d), color.a); }";
 
   function Player(doc, win) {
     this.doc = doc;
@@ -192,8 +224,12 @@ var WbtcPlayer = (function () {
     this.items = [];
     var self = this;
     this.data.geoms.forEach(function (geom, index) {
-      items(geom).forEach(function (it) { self.items.push({shape: it[0], local: it[1], body: geom.body, geom: index}); });
+      var texture = texturing(geom);
+      items(geom).forEach(function (it) {
+        self.items.push({shape: it[0], local: it[1], body: geom.body, geom: index, texture: texture});
+      });
     });
+    this.textures = [];  // WebGL textures by image index, each null until its image has loaded
     this.time = 0;
     this.playing = true;
     this.orbit = startView(this.data.camera, this.state.poses[0], this.data.bodies.length);
@@ -229,26 +265,57 @@ var WbtcPlayer = (function () {
       gl.attachShader(program, shader);
     });
     gl.linkProgram(program);
+    if (gl.getProgramParameter && !gl.getProgramParameter(program, gl.LINK_STATUS)) {
+      throw new Error("wbtc player: the shaders do not link: " + gl.getProgramInfoLog(program));
+    }
     gl.useProgram(program);
     this.program = program;
     this.loc = {};
-    ["mvp", "model", "normals", "color", "eye"].forEach(function (u) { self.loc[u] = gl.getUniformLocation(program, u); });
-    this.attr = {position: gl.getAttribLocation(program, "position"), normal: gl.getAttribLocation(program, "normal")};
+    ["mvp", "model", "normals", "color", "eye", "mode", "uvMap", "image"].forEach(function (u) {
+      self.loc[u] = gl.getUniformLocation(program, u);
+    });
+    this.attr = {position: gl.getAttribLocation(program, "position"), normal: gl.getAttribLocation(program, "normal"),
+      uv: gl.getAttribLocation(program, "uv")};
     var shapes = {box: box(), sphere: sphere(0, Math.PI), cylinder: cylinder(true), tube: cylinder(false),
       top: sphere(0, Math.PI / 2), bottom: sphere(Math.PI / 2, Math.PI), plane: plane()};
     this.data.meshes.forEach(function (m, i) { shapes["mesh" + i] = mesh(m); });
     this.buffers = {};
     Object.keys(shapes).forEach(function (name) {
-      var s = shapes[name], pb = gl.createBuffer(), nb = gl.createBuffer();
+      var s = shapes[name], pb = gl.createBuffer(), nb = gl.createBuffer(), tb = gl.createBuffer();
       gl.bindBuffer(gl.ARRAY_BUFFER, pb);
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(s.positions), gl.STATIC_DRAW);
       gl.bindBuffer(gl.ARRAY_BUFFER, nb);
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(s.normals), gl.STATIC_DRAW);
-      self.buffers[name] = {positions: pb, normals: nb, count: s.positions.length / 3};
+      gl.bindBuffer(gl.ARRAY_BUFFER, tb);  // only meshes have their own; the others compute theirs
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(s.uvs || new Array(s.positions.length / 3 * 2).fill(0)),
+        gl.STATIC_DRAW);
+      self.buffers[name] = {positions: pb, normals: nb, uvs: tb, count: s.positions.length / 3};
     });
+    this.loadTextures();
     gl.enable(gl.DEPTH_TEST);
     gl.enable(gl.BLEND);
     gl.blendFunc(gl.SRC_ALPHA, gl.ONE_MINUS_SRC_ALPHA);
+  };
+
+  // Each image becomes a repeating, mipmapped texture once the browser has decoded it.
+  Player.prototype.loadTextures = function () {
+    var gl = this.gl, self = this;
+    (this.data.textures || []).forEach(function (url, index) {
+      self.textures.push(null);
+      if (typeof Image === "undefined") return;
+      var image = new Image();
+      image.onload = function () {
+        var texture = gl.createTexture();
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA, gl.RGBA, gl.UNSIGNED_BYTE, image);
+        gl.generateMipmap(gl.TEXTURE_2D);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR_MIPMAP_LINEAR);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+        self.textures[index] = texture;
+      };
+      image.src = url;
+    });
   };
 
   // Draw the frame at this.time; returns the number of draw calls.
@@ -281,6 +348,12 @@ var WbtcPlayer = (function () {
         gl.uniformMatrix4fv(self.loc.model, false, model);
         gl.uniformMatrix3fv(self.loc.normals, false, normalMatrix(model));
         gl.uniform4fv(self.loc.color, rgba);
+        var texture = it.texture && self.textures[it.texture.tex];
+        gl.uniform1f(self.loc.mode, texture ? it.texture.mode : 0);
+        if (texture) {
+          gl.bindTexture(gl.TEXTURE_2D, texture);
+          gl.uniform4fv(self.loc.uvMap, it.texture.map);
+        }
         var buffer = self.buffers[it.shape];
         gl.bindBuffer(gl.ARRAY_BUFFER, buffer.positions);
         gl.enableVertexAttribArray(self.attr.position);
@@ -288,6 +361,9 @@ var WbtcPlayer = (function () {
         gl.bindBuffer(gl.ARRAY_BUFFER, buffer.normals);
         gl.enableVertexAttribArray(self.attr.normal);
         gl.vertexAttribPointer(self.attr.normal, 3, gl.FLOAT, false, 0, 0);
+        gl.bindBuffer(gl.ARRAY_BUFFER, buffer.uvs);
+        gl.enableVertexAttribArray(self.attr.uv);
+        gl.vertexAttribPointer(self.attr.uv, 2, gl.FLOAT, false, 0, 0);
         gl.drawArrays(gl.TRIANGLES, 0, buffer.count);
         calls++;
       });
@@ -387,7 +463,8 @@ var WbtcPlayer = (function () {
     this.win.requestAnimationFrame(tick);
   };
 
-  return {Player: Player, frameAt: frameAt, timeline: timeline, items: items, pose: pose, multiply: multiply};
+  return {Player: Player, frameAt: frameAt, timeline: timeline, items: items, texturing: texturing, pose: pose,
+    multiply: multiply};
 })();
 
 if (typeof document !== "undefined" && document.getElementById("wbtc-animation")) {
