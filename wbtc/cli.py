@@ -110,7 +110,8 @@ def run(
     = None,
     physics_step: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
     no_noise: Annotated[bool, typer.Option("--no-noise", help="Turn sensor noise off.")] = False,
-    record: Annotated[Path | None, typer.Option("--record", help="Write a video of the Viewpoint (.mp4 or .gif).")]
+    record: Annotated[Path | None, typer.Option(
+        "--record", help="Write a video of the Viewpoint (.mp4 or .gif), or a page replaying the run (.html).")]
     = None,
 ) -> None:
     """Simulate a world and run its robots' Python controllers."""

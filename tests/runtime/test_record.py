@@ -62,8 +62,26 @@ def test_gif_decodes_with_pillow_to_the_expected_frames(tmp_path):
     assert np.abs(first.astype(int) - last).max() > 100
 
 
+def test_html_record_is_an_animation_page_of_the_whole_run(tmp_path):
+    import re
+
+    data, _ = _record(tmp_path, "run.html", "--duration", "2")
+    text = (tmp_path / "run.html").read_text(encoding="utf-8")
+    page = json.loads(re.search(r'<script id="wbtc-animation" type="application/json">(.*?)</script>', text,
+                                re.S).group(1))
+    # From time 0, a frame every two basic steps of 16 ms (at most 60 a second): 63 frames to 1.984 s, and
+    # the run's last state at 2 s.
+    assert page["duration"] == pytest.approx(data["sim_time"]) == pytest.approx(2.0)
+    assert len(page["frames"]) == 64 and page["frames"][-2]["t"] == pytest.approx(1.984)
+    robot = page["bodies"].index(data["robots"][0]["name"])
+    last = [p for f in page["frames"] for p in f["p"] if p[0] == robot][-1]
+    assert last[1:3] == pytest.approx(data["robots"][0]["position"][:2], abs=1e-4)
+    assert not list(tmp_path.glob(".*part*"))
+
+
 @pytest.mark.parametrize(("name", "message"), [("no_such_folder/run.mp4", "cannot write"),
-                                               ("run.avi", "neither an .mp4 nor a .gif")])
+                                               ("no_such_folder/run.html", "cannot write"),
+                                               ("run.avi", "not an .mp4, .gif or .html")])
 def test_a_bad_record_path_is_a_clear_error(tmp_path, name, message):
     shutil.copy(FIXTURES / "record_circle.wbt", tmp_path / "record_circle.wbt")
     result = CliRunner().invoke(app, ["run", str(tmp_path / "record_circle.wbt"), "--headless", "--duration", "1",

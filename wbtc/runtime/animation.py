@@ -6,7 +6,8 @@ primitives and meshes, with their colours), the pose of every body that carries 
 (only the poses that changed), LED colour changes and supervisor labels, and a small WebGL player
 (`player/animation.js`: orbit, pan, zoom, play/pause, time slider) that draws them. Frames are taken
 every basic time step, or every few steps so that they come at most 60 times a simulated second.
-Poses are in the model's frame (ENU, z up), whatever the world's own axes.
+Poses are in the model's frame (ENU, z up), whatever the world's own axes. `wbtc run --record
+FILE.html` writes the same page for a whole run (`PageRecorder`).
 
 Textured planes, boxes and meshes carry their texture (see `animation_textures`); other textured
 geoms show the texture's mean colour.
@@ -18,6 +19,7 @@ followed by name).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import os
@@ -29,6 +31,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.context import VISUAL_GROUP
+from wbtc.errors import WbtcError
 from wbtc.runtime.animation_textures import Textures, mesh_uv
 
 if TYPE_CHECKING:
@@ -67,11 +70,15 @@ class AnimationRecorder:
         self.last_labels: dict[str, list] = {}
         self(sim)
 
-    def __call__(self, sim: Simulation) -> None:
-        """Take a frame when one is due (call after every step)."""
-        if sim.time_ms + 1e-9 < self.due_ms:
+    def __call__(self, sim: Simulation, last: bool = False) -> None:
+        """Take a frame when one is due (call after every step); `last`: now, unless one was just taken."""
+        if last:
+            if self.frames and self.frames[-1]["t"] >= round((sim.time_ms - self.start_ms) / 1000.0, 6):
+                return
+        elif sim.time_ms + 1e-9 < self.due_ms:
             return
-        self.due_ms += self.period_ms
+        else:
+            self.due_ms += self.period_ms
         if sim.generation != self.generation:
             self._follow(sim)
         frame: dict[str, Any] = {"t": round((sim.time_ms - self.start_ms) / 1000.0, 6), "p": self._poses(sim)}
@@ -125,6 +132,39 @@ class AnimationRecorder:
         temp = self.path.with_name(f".{self.path.name}.part")
         temp.write_text(page, encoding="utf-8")
         os.replace(temp, self.path)
+
+
+class PageRecorder:
+    """`wbtc run --record FILE.html`: the whole run as an animation page (a `RunOptions.on_step` hook)."""
+
+    def __init__(self, sim: Simulation, path: Path) -> None:
+        """Start recording at the world's first state.
+
+        Raises:
+            WbtcError: the page's folder does not exist.
+        """
+        if not path.parent.is_dir():
+            raise WbtcError(f"--record: cannot write {path}: its folder does not exist")
+        self.path, self.sim = path, sim
+        self.recorder = AnimationRecorder(sim, path)
+
+    def __call__(self, sim: Simulation) -> bool:
+        """After each basic step: take a frame when one is due (the run goes on)."""
+        self.recorder(sim)
+        return True
+
+    def close(self) -> None:
+        """Write the page, ending with the run's last state (an aborted run writes nothing)."""
+        try:
+            self.recorder(self.sim, last=True)
+            self.recorder.close()
+        except OSError as exc:
+            with contextlib.suppress(OSError):
+                self.path.with_name(f".{self.path.name}.part").unlink()
+            raise WbtcError(f"--record: cannot write {self.path}: {exc.strerror or exc}") from None
+
+    def abort(self) -> None:
+        """Nothing to drop: the page is only written by `close`."""
 
 
 def _scene(sim: Simulation) -> dict[str, Any]:

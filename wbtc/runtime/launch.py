@@ -2,7 +2,8 @@
 
 With a display and without `--headless`, MuJoCo's interactive viewer shows the run in real time
 and keys typed there reach the robots' Keyboard devices. Headless, a progress bar shows on a
-terminal and a summary (or `--json`) ends the run. `--record FILE` films the Viewpoint (`record`).
+terminal and a summary (or `--json`) ends the run. `--record FILE` films the Viewpoint (`record`), or
+writes an animation page for a FILE.html (`animation`).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
 from wbtc.pipeline import load_world
+from wbtc.runtime.animation import PageRecorder
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.record import Recorder
 from wbtc.runtime.runner import RunOptions, run
@@ -29,7 +31,7 @@ from wbtc.runtime.viewer import open_viewer
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
            json_output: bool, trace: Path | None, keys: Path | None, physics_step: float, noise: bool,
            warn: Callable[[list[Diagnostic]], None], record: Path | None = None) -> int:
-    """Run a world as `wbtc run` does (`record`: the video file to write); returns the process exit code."""
+    """Run a world as `wbtc run` does (`record`: the video or page to write); returns the process exit code."""
     key_script = read_keys(keys) if keys else []
     compile_options = CompileOptions(max_substep_ms=physics_step)
     scene, expansion = load_world(world)
@@ -75,11 +77,12 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     return outcome.quit_status if outcome.quit_status is not None else 0
 
 
-def _recorder(sim: Simulation, path: Path | None) -> Recorder | None:
+def _recorder(sim: Simulation, path: Path | None) -> Recorder | PageRecorder | None:
+    """The `--record` hook: a video (.mp4, .gif) or an animation page (.html)."""
     if path is None:
         return None
     try:
-        return Recorder(sim, path)
+        return PageRecorder(sim, path) if path.suffix.lower() == ".html" else Recorder(sim, path)
     except BaseException:
         sim.close()
         raise

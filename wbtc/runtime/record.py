@@ -49,7 +49,7 @@ class Recorder:
         """
         suffix = path.suffix.lower()
         if suffix not in FORMATS:
-            raise WbtcError(f"--record: {path} is neither an .mp4 nor a .gif file name")
+            raise WbtcError(f"--record: {path} is not an .mp4, .gif or .html file name")
         self.path = path
         self.width, self.height, self.fps = FORMATS[suffix]
         self.temp = path.with_name(f".{path.stem}.{os.getpid()}.part{suffix}")
