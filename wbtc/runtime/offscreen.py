@@ -19,13 +19,30 @@ colours are linear and clamped); shadows (`castShadows`) in camera images and re
 
 from __future__ import annotations
 
+import importlib
 import math
+import os
 
 import mujoco
 import numpy as np
 
 #: Scene flags for every image: no reflections, haze or post-processing.
 _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
+
+
+def _gl_context(width: int, height: int) -> object:
+    """An OpenGL context for offscreen images.
+
+    MuJoCo picks its OpenGL platform once, when it is imported, from MUJOCO_GL: a script that imported
+    `mujoco` before `wbtc` on a machine without a display got GLFW, which needs one. wbtc has set
+    MUJOCO_GL to the headless platform since (see `wbtc._choose_headless_gl`): that platform's context
+    is used then.
+    """
+    platform = os.environ.get("MUJOCO_GL", "")
+    if platform in ("egl", "osmesa") and mujoco.GLContext.__module__.startswith("mujoco.glfw"):
+        module = importlib.import_module(f"mujoco.{platform}")
+        return module.GLContext(width, height)
+    return mujoco.GLContext(width, height)
 
 
 class Offscreen:
@@ -50,7 +67,7 @@ class Offscreen:
         if not shadows:
             vis.quality.shadowsize = 0  # no shadow map (MuJoCo's default one takes 85 ms to make)
         try:
-            self.gl = mujoco.GLContext(self.width, self.height)
+            self.gl = _gl_context(self.width, self.height)
             self.gl.make_current()
             self.context: mujoco.MjrContext | None = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
         finally:
