@@ -168,17 +168,19 @@ def encode(obj: Any) -> bytes:
         clean = False
     if not clean:
         try:
-            payload = pickle.dumps(plain(obj), protocol=PROTOCOL)
-        except (pickle.PicklingError, AttributeError, TypeError):
-            payload = b""
-        if not payload or (_STACK_GLOBAL in payload and _names_a_global(payload)):
-            raise TypeError("wbtc: a value passed to the controller API is not plain data "
-                            "(numbers, strings, bytes, lists, tuples, dicts, None)")
+            payload = pickle.dumps(plain(obj), protocol=PROTOCOL)  # builtins only now: nothing to refuse
+        except (pickle.PicklingError, AttributeError, TypeError) as exc:
+            raise TypeError(f"wbtc: a value passed to the controller API is not plain data (numbers, strings, "
+                            f"bytes, lists, tuples, dicts, None): {exc}") from None
     return _HEADER.pack(len(payload)) + payload
 
 
 def plain(obj: Any) -> Any:
-    """`obj` with numpy numbers and arrays as Python numbers and lists, builtin subclasses as builtins."""
+    """`obj` with numpy numbers and arrays as Python numbers and lists, builtin subclasses as builtins.
+
+    Raises:
+        TypeError: something in `obj` is none of those.
+    """
     kind = type(obj)
     if kind in (str, bytes, bool, int, float, type(None)):
         return obj
@@ -195,15 +197,7 @@ def plain(obj: Any) -> Any:
             return base.__str__(obj) if base is str else base(obj)
     if isinstance(obj, (bytearray, memoryview)):
         return bytes(obj)
-    return obj
-
-
-def _names_a_global(payload: bytes) -> bool:
-    try:
-        decode(payload)
-    except pickle.UnpicklingError:
-        return True
-    return False
+    raise TypeError(f"a {kind.__name__}")
 
 
 def decode(payload: bytes) -> Any:
