@@ -226,6 +226,37 @@ def test_set_joint_position_turns_the_joint_at_once(tmp_path):
     # The 0.2 m arm (its centre of mass at its end) turned 0.5 rad about +y: the end went down.
     com = sim.data.xipos[joint.bodyid[0]]
     assert com == pytest.approx([0.2 * np.cos(0.5), 0.0, 1.0 - 0.2 * np.sin(0.5)], abs=1e-9)
+    # Its motor now targets 0.5 rad, as Webots' joints make their motor do: the arm stays there.
+    motor = next(iter(arm.motors.values()))
+    assert motor.target == 0.5
+    for _ in range(60):
+        sim.step()
+    assert sim.data.qpos[joint.qposadr[0]] == pytest.approx(0.5, abs=0.01)
+    sim.close()
+
+
+def test_loading_a_state_makes_motors_hold_the_loaded_positions(tmp_path):
+    # Webots resets a joint's motor, then sets the joint's saved position, which sets the motor's target:
+    # a motor in velocity control when the state was saved holds the saved position after loading it.
+    sim, hub, arm, shoulder = _arm_supervisor(tmp_path)
+    motor = next(iter(arm.motors.values()))
+    motor.apply("setPosition", (float("inf"),))
+    motor.apply("setVelocity", (1.0,))
+    for _ in range(10):
+        sim.step()
+    root = hub.call(arm, "getRoot", ())
+    hub.queue(arm, "node.saveState", (root["id"], "turning"))
+    hub.flush()
+    joint = sim.model.joint(sim.table.robots[0].device("shoulder").joint)
+    saved = float(sim.data.qpos[joint.qposadr[0]])
+    for _ in range(10):
+        sim.step()
+    hub.queue(arm, "node.loadState", (root["id"], "turning"))
+    hub.flush()
+    assert sim.data.qpos[joint.qposadr[0]] == pytest.approx(saved, abs=1e-12) and motor.target == saved
+    for _ in range(30):
+        sim.step()
+    assert sim.data.qpos[joint.qposadr[0]] == pytest.approx(saved, abs=0.01)
     sim.close()
 
 

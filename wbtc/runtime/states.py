@@ -8,7 +8,9 @@ of the whole world when the run started, as in Webots. Loading a state restores 
 holds for the node's current subtree; what the state does not know is left alone.
 
 `setJointPosition(position, index)` sets a HingeJoint's, Hinge2Joint's or SliderJoint's position at
-once (index 2 is a Hinge2Joint's second axis); motors keep their own targets.
+once (index 2 is a Hinge2Joint's second axis). As in Webots, setting a joint's position also makes
+its motor target that position (Webots' joints do so when a supervisor sets them and when a state is
+loaded): a wheel turning in velocity control stops and holds there until its controller says more.
 
 Not honoured yet: BallJoint positions, and the fields of other nodes (a LED's colour, a Pen's ink)
 that Webots' states also hold.
@@ -86,6 +88,11 @@ def restore(sim: Simulation, root: int, state: State) -> None:
             if saved_motor is not None and descends(model, model.joint(motor.entry.joint).bodyid[0], root):
                 motor.target, motor.velocity, motor.torque = saved_motor
                 motor.integral = motor.prev_error = 0.0
+                # Then the joint takes its saved position, and with it its motor's target (Webots'
+                # WbJoint::reset sets the position after resetting the motor).
+                saved_joint = state.joints.get(motor.entry.joint or "")
+                if saved_joint is not None and len(saved_joint[0]) == 1:
+                    motor.apply("setPosition", (float(saved_joint[0][0]),))
     mujoco.mj_forward(model, data)
 
 
@@ -99,6 +106,11 @@ def set_joint_position(sim: Simulation, body: int, position: float, index: int) 
     if int(model.jnt_type[joint]) not in (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE):
         return "Warning: wb_supervisor_node_set_joint_position() is not supported for a BallJoint by wbtc yet."
     sim.data.qpos[int(model.jnt_qposadr[joint])] = position
+    name = model.joint(joint).name
+    for robot in sim.robots:  # the joint's motor now targets where the joint is (Webots' rule)
+        for motor in robot.motors.values():
+            if motor.entry.joint == name:
+                motor.apply("setPosition", (position,))
     mujoco.mj_forward(model, sim.data)
     return None
 
