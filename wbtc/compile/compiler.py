@@ -13,7 +13,7 @@ from pathlib import Path
 
 import mujoco
 
-from wbtc.compile import device, world
+from wbtc.compile import damping, device, world
 from wbtc.compile.context import CompileContext, CompileOptions
 from wbtc.compile.solid import BodyBuilder
 from wbtc.compile.table import DeviceTable
@@ -84,6 +84,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     model = _compile(spec)
     device.tune_servos(spec, model)
+    damping.damp_free_joints(model, ctx.damped)
     return CompileResult(spec, model, ctx.table, ctx.warnings, ctx.texture_paths)
 
 

@@ -49,6 +49,7 @@ class CompileContext:
     warnings: list[Diagnostic] = field(default_factory=list)
     contact_geoms: list[tuple[mujoco.MjsGeom, Node]] = field(default_factory=list)
     default_damping: Node | None = None
+    damped: list[tuple[str, float, float]] = field(default_factory=list)  # free joint, linear and angular rates
     texture_paths: dict[str, str] = field(default_factory=dict)
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)

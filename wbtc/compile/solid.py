@@ -16,19 +16,17 @@ Solids with `recognitionColors` are listed in the table for the runtime's camera
 Camera's entry gets its Recognition node's fields under `recognition`).
 
 Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `locked`, hidden
-`linearVelocity`/`angularVelocity`; Physics `damping` is approximated with free-joint damping;
+`linearVelocity`/`angularVelocity`; Physics `damping` acts on the free joint only (see `damping`);
 Robot `battery`, `cpuConsumption`.
 Robot `selfCollision FALSE` (the default) excludes every pair of the robot's colliding bodies.
 """
 
 from __future__ import annotations
 
-import math
-
 import mujoco
 import numpy as np
 
-from wbtc.compile import appearance, device, geometry, joint, light
+from wbtc.compile import appearance, damping, device, geometry, joint, light, propeller
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.table import Recognizable, RobotEntry, plain
@@ -85,7 +83,9 @@ class BodyBuilder:
             end = node.get("endPoint")
             if isinstance(end, Node):
                 self.walk(end, body, frame, robot, dynamic)
-        elif kind in ("CadShape", "Propeller", "Fluid", "Skin", "Muscle"):
+        elif kind == "Propeller":
+            propeller.add_propeller(self, node, body, frame, robot)
+        elif kind in ("CadShape", "Fluid", "Skin", "Muscle"):
             self.ctx.warn(f"{kind} is not supported by wbtc yet; it is left out", node.span)
 
     def walk_children(self, children: list | None, body: mujoco.MjsBody, frame: Frame,
@@ -155,7 +155,11 @@ class BodyBuilder:
         props = self._bounding(node.get("boundingObject"), body, inner, node)
         _inertial(body, physics if has_physics else None, props, moves and joint_frame is not None, ctx, node)
         if top_level and has_physics:
-            body.first_joint().damping = [_damping_rate(physics, ctx) * body.mass, 0.0, 0.0]
+            linear, angular = damping.rates(physics, ctx)
+            free_joint = body.first_joint()
+            free_joint.damping = [linear * body.mass, 0.0, 0.0]  # the tree's six come once compiled
+            if linear or angular:
+                ctx.damped.append((free_joint.name, linear, angular))
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
         self.walk_children(node.get("children"), body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
@@ -291,17 +295,3 @@ def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, 
     for i in range(3):
         inertia[i, i] = max(inertia[i, i], floor)
     return com, inertia
-
-
-def _damping_rate(physics: Node, ctx: CompileContext) -> float:
-    """The velocity decay rate (1/s) of a Physics node's Damping, or of WorldInfo.defaultDamping."""
-    damping = physics.get("damping")
-    if not isinstance(damping, Node):
-        damping = ctx.default_damping
-    if not isinstance(damping, Node):
-        return 0.0
-    linear = min(max(float(damping.get("linear")), 0.0), 0.999)
-    # ODE removes the fraction `linear` of the velocity per second: a first-order decay of rate
-    # -ln(1 - linear). MuJoCo's joint damping is a force per velocity, hence the caller's × mass
-    # (the angular part shares the linear rate: MuJoCo has one damping per joint).
-    return -math.log(1 - linear)

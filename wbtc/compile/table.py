@@ -35,6 +35,8 @@ class DeviceEntry:
         sensor: for a motor, the position sensor on the same joint (a device name).
         initial_position: the joint position written in the world (`JointParameters.position`).
         axis: which axis of a multi-axis joint (1, 2, 3).
+        propeller: for a Propeller's motor: its shaft axis in its site's frame ("axis") and its
+            thrust and torque constants ("thrust", "torque"); the site is its center of thrust.
     """
 
     name: str
@@ -51,6 +53,7 @@ class DeviceEntry:
     sensor: str | None = None
     initial_position: float = 0.0
     axis: int = 1
+    propeller: dict[str, list[float]] | None = None
 
 
 @dataclass

@@ -23,7 +23,7 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
     for tag, dev in enumerate(entry.devices):
         info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
                                 "model": str(dev.fields.get("model", "") or ""), "fields": dev.fields}
-        if dev.actuator:
+        if dev.actuator or dev.propeller:
             info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=None)
         if dev.type == "PositionSensor":
             info["motor"] = names.get(dev.motor or "")

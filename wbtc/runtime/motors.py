@@ -31,15 +31,19 @@ class Motor:
     """The runtime state of one RotationalMotor or LinearMotor."""
 
     def __init__(self, entry: DeviceEntry, model: mujoco.MjModel, robot_name: str) -> None:
-        fields = entry.fields
-        self.entry = entry
-        self.robot_name = robot_name
+        self._setup(entry, robot_name)
         self.actuator = model.actuator(entry.actuator).id
         joint = model.joint(entry.joint).id
         self.qpos_adr = int(model.jnt_qposadr[joint])
         self.dof_adr = int(model.jnt_dofadr[joint])
         self.kv = float(model.actuator_gainprm[self.actuator, 0])
         self.gain = self.kv
+
+    def _setup(self, entry: DeviceEntry, robot_name: str) -> None:
+        """The Webots motor's own state, from its fields (whatever drives it in MuJoCo)."""
+        fields = entry.fields
+        self.entry = entry
+        self.robot_name = robot_name
         self.max_velocity = float(fields.get("maxVelocity", 10.0))
         self.max_torque = float(fields.get("maxTorque", fields.get("maxForce", 10.0)))
         self.min_position = float(fields.get("minPosition", 0.0))
@@ -100,10 +104,26 @@ class Motor:
             self._written = (None, math.nan)
             data.ctrl[a] = self.torque
             return
+        wanted = self._velocity_command(ts, float(data.qpos[self.qpos_adr]))
+        self._limit_gain(data, wanted)
+        if self._written[0] is not model or self._written[1] != self.gain:
+            model.actuator_gainprm[a, 0] = self.gain
+            model.actuator_biasprm[a, 2] = -self.gain
+            # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
+            model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
+            self._written = (model, self.gain)
+        data.ctrl[a] = wanted
+
+    def _velocity_command(self, ts: float, position: float) -> float:
+        """The velocity Webots asks for this step.
+
+        The requested one in velocity control, else the PID's towards the target (clamped to the
+        requested velocity); either way its change is limited by `acceleration`.
+        """
         if math.isinf(self.target):
             wanted = self.velocity
         else:
-            error = self.target - float(data.qpos[self.qpos_adr])
+            error = self.target - position
             self.integral += error * ts
             derivative = (self.prev_error - error) / ts
             self.prev_error = error
@@ -114,14 +134,7 @@ class Motor:
             step = self.acceleration * ts
             wanted = min(max(wanted, self.command - step), self.command + step)
         self.command = wanted
-        self._limit_gain(data, wanted)
-        if self._written[0] is not model or self._written[1] != self.gain:
-            model.actuator_gainprm[a, 0] = self.gain
-            model.actuator_biasprm[a, 2] = -self.gain
-            # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
-            model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
-            self._written = (model, self.gain)
-        data.ctrl[a] = wanted
+        return wanted
 
     def _limit_gain(self, data: mujoco.MjData, wanted: float) -> None:
         """Keep the servo's effort within the available torque by lowering its gain.

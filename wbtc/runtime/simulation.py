@@ -22,6 +22,7 @@ from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.offscreen import Offscreen
+from wbtc.runtime.propeller import PropellerMotor
 from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
 from wbtc.runtime.surface import SurfaceColours
@@ -90,6 +91,8 @@ class Simulation:
     def _device(self, state: RobotState, tag: int, dev: DeviceEntry) -> None:
         if dev.actuator:
             state.motors[tag] = Motor(dev, self.model, state.entry.name)
+        elif dev.propeller:
+            state.motors[tag] = PropellerMotor(dev, self.model, state.entry.name)
         elif dev.type == "LED":
             state.leds[tag] = Led(dev, self.model)
         elif dev.type == "Emitter":
