@@ -84,7 +84,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     model = _compile(spec)
     device.tune_servos(spec, model)
-    damping.damp_free_joints(model, ctx.damped)
+    damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)
     return CompileResult(spec, model, ctx.table, ctx.warnings, ctx.texture_paths)
 
 

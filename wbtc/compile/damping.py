@@ -3,14 +3,18 @@
 Webots (ODE) takes the fraction `linear` of every body's linear velocity away per second, and the
 fraction `angular` of its angular velocity: first-order decays of rates −ln(1 − linear) and
 −ln(1 − angular). MuJoCo damps joint velocities with a force per velocity, so the free joint of
-the tree gets, per degree of freedom:
+the tree gets:
 
-- translation: the linear rate × the tree's mass;
-- rotation: the angular rate × the tree's inertia about that axis through its centre of mass, at
-  the starting pose.
+- rotation: the angular rate × the tree's inertia about each axis through its centre of mass, at the
+  starting pose, as the damping of the joint's three rotational degrees of freedom (a torque, the
+  same about any point);
+- translation: the linear rate × the tree's mass, as a force on the tree's centre of mass that the
+  runtime applies every step (`DeviceTable.linear_damping`, see `wbtc.runtime.damping`). A joint
+  damping would push the body's origin instead, which the centre of mass is often off: the drag of a
+  drifting drone would then turn it.
 
-The spec (and so an exported MJCF, where a joint has one damping) keeps the translational value; the
-compiled model gets all six.
+The spec (and so an exported MJCF, where a joint has one damping) keeps the translational value on
+the joint; the compiled model gets the three rotational ones.
 
 Not honoured yet: damping of bodies below joints (a wheel's own spin is not slowed), and a damping
 that would follow the tree's changing inertia as its joints move.
@@ -39,8 +43,9 @@ def rates(physics: Node, ctx: CompileContext) -> tuple[float, float]:
     return -math.log(1 - linear), -math.log(1 - angular)
 
 
-def damp_free_joints(model: mujoco.MjModel, damped: list[tuple[str, float, float]]) -> None:
-    """Give each named free joint its six dampings (see the module docstring)."""
+def damp_free_joints(model: mujoco.MjModel, damped: list[tuple[str, float, float]],
+                     linear_damping: dict[str, float]) -> None:
+    """Give each named free joint its rotational dampings; its linear one goes to `linear_damping`."""
     if not damped:
         return
     data = mujoco.MjData(model)
@@ -50,7 +55,9 @@ def damp_free_joints(model: mujoco.MjModel, damped: list[tuple[str, float, float
         dof, body = int(joint.dofadr[0]), int(joint.bodyid[0])
         mass = float(model.body_subtreemass[body])
         axes = data.xmat[body].reshape(3, 3)  # the free joint's rotational dofs turn about these
-        model.dof_damping[dof:dof + 3] = linear * mass
+        model.dof_damping[dof:dof + 3] = 0.0
+        if linear:
+            linear_damping[name] = linear * mass
         model.dof_damping[dof + 3:dof + 6] = angular * np.diag(axes.T @ _tree_inertia(model, data, body) @ axes)
 
 

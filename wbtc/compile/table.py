@@ -113,6 +113,8 @@ class DeviceTable:
             its translation/rotation are relative to, in the parent body: what the supervisor needs to read
             and write a Solid's pose.
         recognizable: the Solids camera recognition can report, in scene order.
+        linear_damping: for each damped free joint (by name), the force per velocity of its tree's centre
+            of mass (N·s/m): Webots damps a body's centre of mass, which a joint damping cannot do.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -123,6 +125,7 @@ class DeviceTable:
     random_seed: int = 0
     bodies: dict[str, str] = field(default_factory=dict)
     viewpoint: dict[str, Any] | None = None
+    linear_damping: dict[str, float] = field(default_factory=dict)
     solids: dict[int, tuple[str, np.ndarray, np.ndarray]] = field(default_factory=dict)
     recognizable: list[Recognizable] = field(default_factory=list)
 

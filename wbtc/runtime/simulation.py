@@ -18,6 +18,7 @@ import numpy as np
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
+from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
@@ -72,6 +73,7 @@ class Simulation:
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
         self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
+        self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
@@ -118,6 +120,10 @@ class Simulation:
         for robot in self.robots:
             for motor in robot.motors.values():
                 motor.update(model, data, ts)
+        if self._drags[0] is not model:  # made once per model (a supervisor's recompile makes another)
+            self._drags = (model, drags(model, self.table.linear_damping))
+        for drag in self._drags[1]:
+            drag.update(model, data)
         mujoco.mj_step(model, data, nstep=self.substeps)
         if self.unstable_at is None:
             if self._badqacc[0] is not data:  # the warning's live view, made once per MjData
