@@ -26,7 +26,7 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wbtc.compile import appearance, damping, device, geometry, joint, light, propeller
+from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.table import Recognizable, RobotEntry, plain
@@ -68,11 +68,11 @@ class BodyBuilder:
         if node.is_a("Solid"):
             self.add_solid(node, body, frame, robot, dynamic)
         elif kind in ("Group", "Billboard"):
-            self.walk_children(node.get("children"), body, frame, robot, dynamic)
+            self.walk_children(node.get("children"), body, frame, robot, dynamic, node)
         elif kind in ("Pose", "Transform"):
             scale = np.asarray(node.get("scale"), dtype=float) if kind == "Transform" else None
             inner = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node), scale)
-            self.walk_children(node.get("children"), body, inner, robot, dynamic)
+            self.walk_children(node.get("children"), body, inner, robot, dynamic, node)
         elif kind == "Shape":
             self.add_shape(node, body, frame)
         elif kind in JOINT_TYPES:
@@ -89,11 +89,14 @@ class BodyBuilder:
             self.ctx.warn(f"{kind} is not supported by wbtc yet; it is left out", node.span)
 
     def walk_children(self, children: list | None, body: mujoco.MjsBody, frame: Frame,
-                      robot: RobotEntry | None, dynamic: bool) -> None:
-        """Add every node of a `children` list."""
+                      robot: RobotEntry | None, dynamic: bool, owner: Node | None = None) -> None:
+        """Add every node of a `children` list (of `owner`)."""
         for child in children or []:
             if isinstance(child, Node):
-                self.walk(child, body, frame, robot, dynamic)
+                # A pre-R2022a world's node in a library robot's slot: RUB axes, as it was written for.
+                turned = legacy_protos.turns_content(self.ctx, owner, child, robot)
+                inner = frame.compose(np.zeros(3), legacy_protos.RUB_IN_FLU) if turned else frame
+                self.walk(child, body, inner, robot, dynamic)
 
     def add_shape(self, shape: Node, body: mujoco.MjsBody, frame: Frame, name: str | None = None) -> list[str]:
         """A Shape as a visual geom; returns the names of the geoms made (for LEDs)."""
@@ -125,6 +128,10 @@ class BodyBuilder:
         ctx = self.ctx
         ctx.unhonoured(node, _UNHONOURED)
         pose = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node))
+        turn = legacy_protos.root_turn(ctx, node, robot)
+        after = turn if turn is not None else legacy_protos.identity()
+        if turn is not None:  # a library robot or floor in a pre-R2022a world: see legacy_protos
+            pose = pose.compose(np.zeros(3), after)
         if robot is not None and joint_frame is None and self._mergeable(node, parent):
             self._merge_device(node, parent, pose, robot, dynamic)
             return parent
@@ -132,7 +139,7 @@ class BodyBuilder:
         body.name = ctx.unique("body", _body_name(node, robot))
         body.pos, body.quat = pose.pos, pose.quat
         body.info = info(node)
-        ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy()))
+        ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy(), after))
         if node.def_name and node.def_name not in ctx.table.bodies:
             ctx.table.bodies[node.def_name] = body.name
         colors = plain(node.get("recognitionColors"))
@@ -149,6 +156,7 @@ class BodyBuilder:
             free.info = info(node)
         if node.is_a("Robot"):
             robot = device.add_robot(node, body, ctx)
+            robot.rub = turn is not None
         # Old Solids had a `scale` field (graphics only); it scales what the Solid holds.
         scale = np.asarray(node.fields["scale"], dtype=float) if "scale" in node.fields else None
         inner = Frame(np.zeros(3), np.array([1.0, 0, 0, 0]), frame.scale if scale is None else frame.scale * scale)
@@ -161,7 +169,7 @@ class BodyBuilder:
             if linear or angular:
                 ctx.damped.append((free_joint.name, linear, angular))
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
-        self.walk_children(node.get("children"), body, inner, robot, moves)
+        self.walk_children(node.get("children"), body, inner, robot, moves, node)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)
         if node.is_a("Robot") and not node.get("selfCollision"):
@@ -195,7 +203,7 @@ class BodyBuilder:
         inner = Frame(pose.pos, pose.quat, pose.scale if scale is None else pose.scale * scale)
         entry = device.add_device(node, body, robot, ctx, self, inner)
         first = len(body.geoms)
-        self.walk_children(node.get("children"), body, inner, robot, dynamic)
+        self.walk_children(node.get("children"), body, inner, robot, dynamic, node)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx, first)
 

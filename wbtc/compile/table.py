@@ -70,6 +70,7 @@ class RobotEntry:
     synchronization: bool
     model: str
     devices: list[DeviceEntry] = field(default_factory=list)
+    rub: bool = False  # an R2022a+ PROTO robot placed by an older file (see compile.legacy_protos)
 
     def device(self, name: str) -> DeviceEntry | None:
         """The device with this Webots name, or None."""
@@ -109,9 +110,10 @@ class DeviceTable:
         random_seed: WorldInfo.randomSeed.
         bodies: MuJoCo body name of each named Solid (by DEF name), for the supervisor.
         viewpoint: the world's Viewpoint fields (plain values), if any.
-        solids: for every Solid node (by `id(node)`), its MuJoCo body and the frame (position, quaternion)
-            its translation/rotation are relative to, in the parent body: what the supervisor needs to read
-            and write a Solid's pose.
+        solids: for every Solid node (by `id(node)`), its MuJoCo body, the frame (position, quaternion)
+            its translation/rotation are relative to, in the parent body, and the rotation the body has
+            after them (a quaternion: identity but for a library robot in a pre-R2022a world): what the
+            supervisor needs to read and write a Solid's pose.
         recognizable: the Solids camera recognition can report, in scene order.
         linear_damping: for each damped free joint (by name), the force per velocity of its tree's centre
             of mass (N·s/m): Webots damps a body's centre of mass, which a joint damping cannot do.
@@ -126,7 +128,7 @@ class DeviceTable:
     bodies: dict[str, str] = field(default_factory=dict)
     viewpoint: dict[str, Any] | None = None
     linear_damping: dict[str, float] = field(default_factory=dict)
-    solids: dict[int, tuple[str, np.ndarray, np.ndarray]] = field(default_factory=dict)
+    solids: dict[int, tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=dict)
     recognizable: list[Recognizable] = field(default_factory=list)
 
     def robot(self, name: str) -> RobotEntry | None:

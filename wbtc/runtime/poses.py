@@ -51,10 +51,11 @@ def local_pose(sim: Simulation, node: Node) -> tuple[list[float], list[float]] |
     body = solid_body(sim, node)
     if body is None:
         return None
-    _, fpos, fquat = sim.table.solids[id(node)]
+    _, fpos, fquat, after = sim.table.solids[id(node)]
     rel_pos, rel_quat = _relative(sim, body)
     translation = quat_rotate(_conj(fquat), rel_pos - fpos)
-    rotation = quat_to_axis_angle(quat_mul(_conj(fquat), rel_quat))
+    # body = frame · rotation · after (`after`: a library robot's FLU axes in a pre-R2022a world)
+    rotation = quat_to_axis_angle(quat_mul(quat_mul(_conj(fquat), rel_quat), _conj(after)))
     return [float(v) for v in translation], [float(v) for v in rotation]
 
 
@@ -68,9 +69,9 @@ def set_local_pose(sim: Simulation, node: Node, translation: list[float] | None,
     assert current is not None
     t = np.asarray(translation if translation is not None else current[0], dtype=float)
     r = rotation if rotation is not None else current[1]
-    _, fpos, fquat = sim.table.solids[id(node)]
+    _, fpos, fquat, after = sim.table.solids[id(node)]
     pos = fpos + quat_rotate(fquat, t)
-    quat = quat_mul(fquat, axis_angle_quat((r[0], r[1], r[2]), r[3]))
+    quat = quat_mul(quat_mul(fquat, axis_angle_quat((r[0], r[1], r[2]), r[3])), after)
     model, data = sim.model, sim.data
     jnt = int(model.body_jntadr[body])
     if jnt >= 0 and model.jnt_type[jnt] == mujoco.mjtJoint.mjJNT_FREE:

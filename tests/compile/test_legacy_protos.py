@@ -1,0 +1,79 @@
+"""Library robots and floors in worlds written before R2022a (RUB PROTOs then, FLU ones in wbtc's library)."""
+
+import numpy as np
+import pytest
+
+from wbtc.pipeline import compile_world
+from wbtc.runtime import poses
+from wbtc.runtime.simulation import Simulation
+
+# An R2021b world in NUE axes (x north, y up, z east), as Webots wrote them: the E-puck was RUB
+# (x right, y up, z back), turned a quarter turn about the world's up; its turret holds a 5 cm mast
+# written in those RUB axes; the floor is 4 m along x and 2 m along z.
+WORLD = """#VRML_SIM R2021b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Floor {
+  size 4 2
+}
+E-puck {
+  translation 1 0.01 0.5
+  rotation 0 1 0 1.5708
+  controller "<none>"
+  turretSlot [
+    Solid {
+      translation 0 0.05 0
+      name "mast"
+    }
+  ]
+}
+"""
+
+
+@pytest.fixture
+def sim(tmp_path):
+    world = tmp_path / "old.wbt"
+    world.write_text(WORLD, encoding="utf-8")
+    result, _ = compile_world(world)
+    simulation = Simulation(result, noise=False)
+    yield simulation
+    simulation.close()
+
+
+def test_an_old_world_e_puck_stands_where_and_as_it_was_placed(sim):
+    to_model = sim.to_model
+    body = sim.robots[0].body
+    axes = sim.data.xmat[body].reshape(3, 3)
+    # Upright: its up is the world's up (NUE y, the model's z).
+    assert axes[:, 2] == pytest.approx(to_model @ [0, 1, 0], abs=1e-5)
+    # Facing its old forward (RUB −z) turned a quarter turn about y: the world's −x (south).
+    assert axes[:, 0] == pytest.approx(to_model @ [-1, 0, 0], abs=1e-5)
+    assert sim.data.xpos[body] == pytest.approx(to_model @ [1, 0.01, 0.5], abs=1e-9)
+    # The mast the old file put 5 cm up the turret is 5 cm above it, not beside it.
+    # (The turret slot is 0.0486 m above the robot's origin.)
+    mast = sim.data.xpos[sim.model.body("e-puck/mast").id] - sim.data.xpos[body]
+    assert mast @ (to_model @ [0, 1, 0]) == pytest.approx(0.0486 + 0.05, abs=1e-3)
+
+
+def test_the_old_floor_is_level_and_spans_x_and_z(sim):
+    floor = next(g for g in range(sim.model.ngeom) if sim.model.geom_type[g] == 0)  # its Plane
+    normal = sim.data.geom_xmat[floor].reshape(3, 3)[:, 2]
+    assert normal == pytest.approx(sim.to_model @ [0, 1, 0], abs=1e-9)
+    half = sim.model.geom_size[floor][:2]
+    extent = np.abs(sim.data.geom_xmat[floor].reshape(3, 3)[:, :2]) @ half
+    assert sim.from_model @ extent == pytest.approx([2.0, 0.0, 1.0], abs=1e-9)
+    for _ in range(60):  # the robot settles on it
+        sim.step()
+    assert sim.data.xpos[sim.robots[0].body] @ (sim.to_model @ [0, 1, 0]) == pytest.approx(0.0, abs=2e-3)
+
+
+def test_the_supervisor_reads_the_rotation_the_old_file_wrote(sim):
+    node = sim.robots[0].entry.node
+    translation, rotation = poses.local_pose(sim, node)
+    assert translation == pytest.approx([1, 0.01, 0.5], abs=1e-9)
+    assert rotation == pytest.approx([0, 1, 0, 1.5708], abs=1e-6)
+    assert poses.set_local_pose(sim, node, None, [0, 1, 0, 0.5])
+    assert poses.local_pose(sim, node)[1] == pytest.approx([0, 1, 0, 0.5], abs=1e-6)
+    assert sim.data.xmat[sim.robots[0].body].reshape(3, 3)[:, 2] == pytest.approx(sim.to_model @ [0, 1, 0],
+                                                                                   abs=1e-6)

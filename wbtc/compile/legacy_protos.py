@@ -1,0 +1,81 @@
+"""Robots from wbtc's library in worlds written before R2022a: their RUB axes.
+
+Until R2021b, the PROTOs that came with Webots had RUB axes (x right, y up, z back); from R2022a
+they have FLU axes (x forward, y left, z up), and wbtc's library follows R2022a+. A world written
+before R2022a places a library robot with a rotation meant for its RUB version, and fills its slots
+(`turretSlot`, ...) with nodes written in RUB axes. So, for a robot whose PROTO file is R2022a or
+later instanced in a file from before R2022a:
+
+- the robot's own frame gets the rotation taking FLU axes onto RUB ones (120 degrees about
+  (−1, 1, 1)/√3: forward → −z, left → −x, up → +y), after its translation and rotation;
+- the nodes the old file puts inside it (slot contents) get the opposite rotation before their own
+  pose, and any PROTO of R2022a or later instanced there gets the first one again.
+
+Floors (Floor, RectangleArena, CircleArena) lay in the old x-z plane with y up: their frame gets a
+quarter turn about x (up onto the old y), so that their sizes span the old x and z.
+
+The supervisor keeps reading and writing the robot's `translation`/`rotation` as the old file means
+them (`DeviceTable.solids` holds the extra rotation).
+
+Not honoured yet: other objects from the library (boxes, walls) keep the library's field meanings:
+their `size` fields meant other axes before R2022a, which the old worlds' own frames happen to make
+right for the vertical one; devices keep FLU axes (an InertialUnit reads its angles about the
+robot's FLU axes).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from wbtc.compile.context import CompileContext
+from wbtc.compile.frames import axis_angle_quat, quat_conj
+from wbtc.compile.table import RobotEntry
+from wbtc.scene.model import Node
+from wbtc.vrml.header import R2022A
+
+#: FLU axes onto RUB axes: x (forward) → −z, y (left) → −x, z (up) → +y.
+FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
+RUB_IN_FLU = quat_conj(FLU_IN_RUB)
+#: A floor's up (z) onto the old y; x stays: `size`/`floorSize` (x, y) then spans the old (x, z).
+FLOOR_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
+FLOORS = frozenset({"Floor", "RectangleArena", "CircleArena"})
+
+
+def _legacy_file(ctx: CompileContext, path: str) -> bool:
+    version = ctx.file_version(path)
+    return version is not None and version < R2022A
+
+
+def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.ndarray | None:
+    """The rotation after its own pose for the root of an R2022a+ PROTO instanced in an older file.
+
+    `FLU_IN_RUB` for a robot (and for such a PROTO inside a robot that was turned), `FLOOR_IN_OLD` for
+    the library's floors, None for anything else (see the module docstring).
+    """
+    instance = node.proto
+    if instance is None or not _legacy_file(ctx, str(instance.span.file)):
+        return None
+    if _legacy_file(ctx, str(instance.source.path)):
+        return None  # a PROTO from before R2022a: RUB inside, as the old file expects
+    if node.is_a("Robot") or (robot is not None and robot.rub):
+        return FLU_IN_RUB
+    if instance.name in FLOORS:
+        return FLOOR_IN_OLD
+    return None
+
+
+def turns_content(ctx: CompileContext, owner: Node | None, child: Node, robot: RobotEntry | None) -> bool:
+    """True for a node of an older file in a node of a turned robot's R2022a+ PROTO (a slot's content).
+
+    Its parent frame gets `RUB_IN_FLU` before its own pose.
+    """
+    if robot is None or not robot.rub or owner is None:
+        return False
+    return _legacy_file(ctx, str(child.span.file)) and not _legacy_file(ctx, str(owner.span.file))
+
+
+def identity() -> np.ndarray:
+    """No extra rotation."""
+    return np.array([1.0, 0.0, 0.0, 0.0])
