@@ -9,13 +9,22 @@ from wbtc.runtime.simulation import Simulation
 
 # An R2021b world in NUE axes (x north, y up, z east), as Webots wrote them: the E-puck was RUB
 # (x right, y up, z back), turned a quarter turn about the world's up; its turret holds a 5 cm mast
-# written in those RUB axes; the floor is 4 m along x and 2 m along z.
+# written in those RUB axes; the floor is 4 m along x and 2 m along z; the wall (4 m long, 2.4 m high,
+# 0.2 m thick) and the box (0.3 m high) stood along y, their sizes written (x, height, z).
 WORLD = """#VRML_SIM R2021b utf8
 WorldInfo {
   coordinateSystem "NUE"
 }
 Floor {
   size 4 2
+}
+Wall {
+  translation 0 0 -1
+  size 4 2.4 0.2
+}
+WoodenBox {
+  translation -1 0.15 0.5
+  size 0.1 0.3 0.2
 }
 E-puck {
   translation 1 0.01 0.5
@@ -77,3 +86,24 @@ def test_the_supervisor_reads_the_rotation_the_old_file_wrote(sim):
     assert poses.local_pose(sim, node)[1] == pytest.approx([0, 1, 0, 0.5], abs=1e-6)
     assert sim.data.xmat[sim.robots[0].body].reshape(3, 3)[:, 2] == pytest.approx(sim.to_model @ [0, 1, 0],
                                                                                    abs=1e-6)
+
+
+def test_old_walls_and_boxes_stand_up_with_their_old_sizes(sim):
+    def box(name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Centre and half extents (world axes) of a body's collision box."""
+        body = sim.model.body(name).id
+        geom = next(g for g in range(sim.model.ngeom) if sim.model.geom_bodyid[g] == body
+                    and sim.model.geom_type[g] == 6 and sim.model.geom_group[g] == 3)
+        axes = sim.data.geom_xmat[geom].reshape(3, 3)
+        half = np.abs(sim.from_model @ axes) @ sim.model.geom_size[geom]
+        return sim.from_model @ sim.data.geom_xpos[geom], half
+
+    # The wall (its box is the inner Solid of the PROTO) stands on the floor: 2.4 m high (y), 4 m long
+    # (x), 0.2 m thick (z), around z = -1.
+    centre, half = box("solid")
+    assert half == pytest.approx([2.0, 1.2, 0.1], abs=1e-9)
+    assert centre == pytest.approx([0.0, 1.2, -1.0], abs=1e-9)
+    # The box is 0.3 m high, centred where it was put.
+    centre, half = box("wooden box")
+    assert half == pytest.approx([0.05, 0.15, 0.1], abs=1e-9)
+    assert centre == pytest.approx([-1.0, 0.15, 0.5], abs=1e-9)

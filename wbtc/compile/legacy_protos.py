@@ -11,16 +11,17 @@ later instanced in a file from before R2022a:
 - the nodes the old file puts inside it (slot contents) get the opposite rotation before their own
   pose, and any PROTO of R2022a or later instanced there gets the first one again.
 
-Floors (Floor, RectangleArena, CircleArena) lay in the old x-z plane with y up: their frame gets a
-quarter turn about x (up onto the old y), so that their sizes span the old x and z.
+Objects (any other Solid-rooted PROTO of R2022a or later) stood along the old y: their frame gets a
+quarter turn about x (up onto the old y, x kept), and the expansion gives them their old `size`
+(an SFVec3f written (x, height, z) before R2022a is (x, z, height) now: `wbtc.proto.expand`). A
+floor's SFVec2f `size` (x, z then, x, y now) needs no change.
 
 The supervisor keeps reading and writing the robot's `translation`/`rotation` as the old file means
 them (`DeviceTable.solids` holds the extra rotation).
 
-Not honoured yet: other objects from the library (boxes, walls) keep the library's field meanings:
-their `size` fields meant other axes before R2022a, which the old worlds' own frames happen to make
-right for the vertical one; devices keep FLU axes (an InertialUnit reads its angles about the
-robot's FLU axes).
+Not honoured yet: an object's heading (Webots' converter turned some objects by a quarter or half turn
+about the vertical as well), object fields other than `size` that name axes, and devices keep FLU
+axes (an InertialUnit reads its angles about the robot's FLU axes).
 """
 
 from __future__ import annotations
@@ -38,9 +39,8 @@ from wbtc.vrml.header import R2022A
 #: FLU axes onto RUB axes: x (forward) → −z, y (left) → −x, z (up) → +y.
 FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
 RUB_IN_FLU = quat_conj(FLU_IN_RUB)
-#: A floor's up (z) onto the old y; x stays: `size`/`floorSize` (x, y) then spans the old (x, z).
-FLOOR_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
-FLOORS = frozenset({"Floor", "RectangleArena", "CircleArena"})
+#: An object's up (z) onto the old y, x kept: a quarter turn about x.
+UP_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
 
 
 def _legacy_file(ctx: CompileContext, path: str) -> bool:
@@ -51,8 +51,9 @@ def _legacy_file(ctx: CompileContext, path: str) -> bool:
 def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.ndarray | None:
     """The rotation after its own pose for the root of an R2022a+ PROTO instanced in an older file.
 
-    `FLU_IN_RUB` for a robot (and for such a PROTO inside a robot that was turned), `FLOOR_IN_OLD` for
-    the library's floors, None for anything else (see the module docstring).
+    `FLU_IN_RUB` for a robot (and for such a PROTO inside a robot that was turned), `UP_IN_OLD` for
+    anything else, None when the PROTO is not R2022a+ or the instance is not older (see the module
+    docstring).
     """
     instance = node.proto
     if instance is None or not _legacy_file(ctx, str(instance.span.file)):
@@ -61,9 +62,7 @@ def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.n
         return None  # a PROTO from before R2022a: RUB inside, as the old file expects
     if node.is_a("Robot") or (robot is not None and robot.rub):
         return FLU_IN_RUB
-    if instance.name in FLOORS:
-        return FLOOR_IN_OLD
-    return None
+    return UP_IN_OLD
 
 
 def turns_content(ctx: CompileContext, owner: Node | None, child: Node, robot: RobotEntry | None) -> bool:

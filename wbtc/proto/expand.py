@@ -29,6 +29,7 @@ from wbtc.scene.build import NodeBuilder
 from wbtc.scene.model import Node, Scene, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
+from wbtc.vrml.header import R2022A, Version
 from wbtc.vrml.parser import parse_body
 from wbtc.vrml.values import coerce, format_value
 
@@ -157,6 +158,7 @@ class Expander:
                         top_level: bool) -> Node | None:
         proto_resolver = self.resolver_for(model)
         values, defaults = self._values(node, model, resolver, proto_resolver)
+        self._old_size(node, model, source, values)
         fields = self._template_fields(model, values, defaults, resolver) if model.is_template else None
         for name, value in values.items():
             if model.fields[name].has_nodes:
@@ -223,6 +225,27 @@ class Expander:
             if name not in values:
                 values[name] = defaults[name]
         return values, defaults
+
+    def _old_size(self, node: Node, model: ProtoModel, source: ProtoSource, values: dict[str, Any]) -> None:
+        """An object of R2022a+ written in an older file: its `size` (x, height, z) becomes (x, z, height).
+
+        Before R2022a, Webots' objects stood along y; since, along z (see `wbtc.compile.legacy_protos`,
+        which turns the object's frame back). Robots keep their fields.
+        """
+        interface = model.fields.get("size")
+        if "size" not in node.fields or interface is None or interface.type != "SFVec3f":
+            return
+        if source.path.parent.name == "robots" or not _older(self._version(str(node.span.file))):
+            return
+        if _older(model.version):
+            return
+        x, height, z = values["size"]
+        values["size"] = [x, z, height]
+
+    def _version(self, path: str) -> Version | None:
+        if path == str(self.scene.path):
+            return self.scene.version
+        return load_proto(Path(path)).version if path.endswith(".proto") and Path(path).is_file() else None
 
     def _typed(self, raw: Any, interface: InterfaceField, model: ProtoModel, span: Span) -> Any:
         if isinstance(raw, Typed):
@@ -336,6 +359,11 @@ def _one_element(value: Any, mf_type: str) -> Any:
     if mf_type in ("MFString", "MFBool", "MFNode"):
         return [value]
     return np.asarray([value], dtype=np.int64 if mf_type == "MFInt32" else np.float64)
+
+
+def _older(version: Version | None) -> bool:
+    """True for a file written before R2022a (Webots' PROTOs then had y up)."""
+    return version is not None and version < R2022A
 
 
 def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:
