@@ -15,3 +15,14 @@ def corpus_files(*suffixes: str) -> list[Path]:
     if not CORPUS.is_dir():
         raise RuntimeError(f"the shared corpus is missing: {CORPUS}")
     return sorted(p for p in CORPUS.rglob("*") if p.suffix.lower() in suffixes)
+
+
+def simulation_of(folder: Path, text: str, name: str = "world.wbt"):
+    """A Simulation (noise off) of the world `text`, written to `folder/name`; the caller closes it."""
+    from wbtc.pipeline import compile_world
+    from wbtc.runtime.simulation import Simulation
+
+    world = folder / name
+    world.write_text(text, encoding="utf-8")
+    result, _ = compile_world(world)
+    return Simulation(result, noise=False)

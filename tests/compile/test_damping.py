@@ -3,9 +3,7 @@
 import math
 
 import pytest
-
-from wbtc.pipeline import compile_world
-from wbtc.runtime.simulation import Simulation
+from conftest import simulation_of
 
 WORLD = """#VRML_SIM R2023b utf8
 WorldInfo {
@@ -43,10 +41,7 @@ Solid {
 
 @pytest.fixture
 def sim(tmp_path):
-    world = tmp_path / "damped.wbt"
-    world.write_text(WORLD, encoding="utf-8")
-    result, _ = compile_world(world)
-    simulation = Simulation(result, noise=False)
+    simulation = simulation_of(tmp_path, WORLD, "damped.wbt")
     yield simulation
     simulation.close()
 

@@ -2,10 +2,9 @@
 
 import numpy as np
 import pytest
+from conftest import simulation_of
 
-from wbtc.pipeline import compile_world
 from wbtc.runtime import poses
-from wbtc.runtime.simulation import Simulation
 
 # An R2021b world in NUE axes (x north, y up, z east), as Webots wrote them: the E-puck was RUB
 # (x right, y up, z back), turned a quarter turn about the world's up; its turret holds a 5 cm mast
@@ -42,10 +41,7 @@ E-puck {
 
 @pytest.fixture
 def sim(tmp_path):
-    world = tmp_path / "old.wbt"
-    world.write_text(WORLD, encoding="utf-8")
-    result, _ = compile_world(world)
-    simulation = Simulation(result, noise=False)
+    simulation = simulation_of(tmp_path, WORLD, "old.wbt")
     yield simulation
     simulation.close()
 

@@ -3,9 +3,7 @@
 import mujoco
 import numpy as np
 import pytest
-
-from wbtc.pipeline import compile_world
-from wbtc.runtime.simulation import Simulation
+from conftest import simulation_of
 
 WORLD = """#VRML_SIM R2025a utf8
 EXTERNPROTO "webots://projects/robots/universal_robots/protos/UR5e.proto"
@@ -20,10 +18,7 @@ JOINTS = ["shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint", "wrist_1_j
 
 @pytest.fixture
 def sim(tmp_path):
-    world = tmp_path / "ur5e.wbt"
-    world.write_text(WORLD, encoding="utf-8")
-    result, _ = compile_world(world)
-    simulation = Simulation(result, noise=False)
+    simulation = simulation_of(tmp_path, WORLD, "ur5e.wbt")
     yield simulation
     simulation.close()
 
