@@ -103,3 +103,21 @@ def test_old_walls_and_boxes_stand_up_with_their_old_sizes(sim):
     centre, half = box("wooden box")
     assert half == pytest.approx([0.05, 0.15, 0.1], abs=1e-9)
     assert centre == pytest.approx([-1.0, 0.15, 0.5], abs=1e-9)
+
+
+def test_a_drone_built_along_z_before_r2022a_is_left_as_the_old_world_turned_it(tmp_path):
+    # Webots' R2020 Mavic world stood its drone (already z-up then) up itself with this rotation.
+    world = """#VRML_SIM R2020a utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Mavic2Pro {
+  translation 0 0.1 0
+  rotation 0 -0.7071067811865475 -0.7071067811865475 -3.14159
+  controller "<none>"
+}
+"""
+    sim = simulation_of(tmp_path, world, "mavic.wbt")
+    up = sim.data.xmat[sim.robots[0].body].reshape(3, 3)[:, 2]
+    assert up == pytest.approx(sim.to_model @ [0, 1, 0], abs=1e-4)
+    sim.close()

@@ -11,6 +11,8 @@ later instanced in a file from before R2022a:
 - the nodes the old file puts inside it (slot contents) get the opposite rotation before their own
   pose, and any PROTO of R2022a or later instanced there gets the first one again.
 
+A few PROTOs were built along z already (`Z_UP_BEFORE`): they are left as they are.
+
 Objects (any other Solid-rooted PROTO of R2022a or later) stood along the old y: their frame gets a
 quarter turn about x (up onto the old y, x kept), and the expansion gives them their old `size`
 (an SFVec3f written (x, height, z) before R2022a is (x, z, height) now: `wbtc.proto.expand`). A
@@ -39,6 +41,9 @@ from wbtc.vrml.header import R2022A
 #: FLU axes onto RUB axes: x (forward) → −z, y (left) → −x, z (up) → +y.
 FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
 RUB_IN_FLU = quat_conj(FLU_IN_RUB)
+#: Webots PROTOs that were already built along z before R2022a (old worlds turned them themselves:
+#: Webots' R2020 Mavic world gives its drone `rotation 0 -0.707 -0.707 -3.14159`).
+Z_UP_BEFORE = frozenset({"Mavic2Pro"})
 #: An object's up (z) onto the old y, x kept: a quarter turn about x.
 UP_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
 
@@ -60,6 +65,8 @@ def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.n
         return None
     if _legacy_file(ctx, str(instance.source.path)):
         return None  # a PROTO from before R2022a: RUB inside, as the old file expects
+    if instance.name in Z_UP_BEFORE:
+        return None
     if node.is_a("Robot") or (robot is not None and robot.rub):
         return FLU_IN_RUB
     return UP_IN_OLD
