@@ -121,3 +121,27 @@ Mavic2Pro {
     up = sim.data.xmat[sim.robots[0].body].reshape(3, 3)[:, 2]
     assert up == pytest.approx(sim.to_model @ [0, 1, 0], abs=1e-4)
     sim.close()
+
+
+def test_an_old_world_thymio_feels_gravity_along_its_old_y(tmp_path):
+    # Its accelerometer read along the RUB axes of the R2021b Thymio2: 1 g is 23 of its units on y.
+    world = """#VRML_SIM R2021b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Floor {
+  size 4 4
+}
+Thymio2 {
+  controller "<none>"
+}
+"""
+    sim = simulation_of(tmp_path, world, "thymio.wbt")
+    robot = sim.robots[0]
+    tag = next(t for t, d in enumerate(robot.entry.devices) if d.name == "acc")
+    for _ in range(60):
+        sim.step()
+    x, y, z = robot.sensors[tag].sample(sim)
+    assert y == pytest.approx(9.81 * 32 / 13.65, rel=0.02)
+    assert abs(x) < 0.5 and abs(z) < 0.5
+    sim.close()

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
+from wbtc.compile import legacy_protos
 from wbtc.compile.context import VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import Frame, mat_to_quat, quat_mul
 from wbtc.compile.table import DeviceEntry, RobotEntry, plain_fields
@@ -36,6 +37,8 @@ SOLID_DEVICES = frozenset({
 CAMERA_DEVICES = frozenset({"Camera", "RangeFinder"})
 #: Sites of devices are drawn in MuJoCo's group 5, hidden in the viewer by default.
 SITE_GROUP = 5
+#: Devices whose readings are vectors or orientations in their own axes.
+_AXIS_DEVICES = frozenset({"Accelerometer", "Gyro", "Compass", "InertialUnit"})
 _UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare", "motionBlur",
                          "projection", "bloomThreshold"})
 #: The runtime casts a Lidar's `projection` itself; its `rotatingHead` solid does not turn.
@@ -94,6 +97,10 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.info = info(node)
     site.pos = at.pos
     site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if kind == "Lidar" and ctx.legacy_axes(node) else at.quat
+    if robot.rub and kind in _AXIS_DEVICES and not ctx.legacy_axes(node):
+        # A library robot in a pre-R2022a world: its IMU, accelerometer, gyro and compass read along
+        # the RUB axes its PROTO had then (see legacy_protos).
+        site.quat = quat_mul(site.quat, legacy_protos.RUB_IN_FLU)
     entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, site=site.name)
     if kind in CAMERA_DEVICES:
         entry.camera = _camera(node, body, ctx, at, own if frame is not None else body.name)

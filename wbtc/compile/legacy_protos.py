@@ -21,9 +21,11 @@ floor's SFVec2f `size` (x, z then, x, y now) needs no change.
 The supervisor keeps reading and writing the robot's `translation`/`rotation` as the old file means
 them (`DeviceTable.solids` holds the extra rotation).
 
+The robot's own InertialUnit, Accelerometer, Gyro and Compass read along those RUB axes too
+(`wbtc.compile.device` turns their sites).
+
 Not honoured yet: an object's heading (Webots' converter turned some objects by a quarter or half turn
-about the vertical as well), object fields other than `size` that name axes, and devices keep FLU
-axes (an InertialUnit reads its angles about the robot's FLU axes).
+about the vertical as well), object fields other than `size` that name axes.
 """
 
 from __future__ import annotations
