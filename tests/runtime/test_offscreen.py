@@ -31,3 +31,16 @@ def test_a_script_that_imports_mujoco_first_still_renders_headless():
     # MuJoCo bound GLFW (it needs a display); wbtc drew with the headless platform instead.
     assert result["platform"].startswith("mujoco.glfw")
     assert result["shape"] == [48, 64, 3] and result["max"] > 0
+
+
+def test_a_display_that_does_not_answer_means_a_headless_run():
+    # MuJoCo's viewer would end the process on such a display (GLFW fails in its C code): wbtc sees it
+    # first, says so, and runs headless, its camera drawn with headless OpenGL.
+    env = {k: v for k, v in os.environ.items() if k not in ("MUJOCO_GL", "PYOPENGL_PLATFORM", "WAYLAND_DISPLAY")}
+    env["DISPLAY"] = ":97"  # no X server there
+    world = Path(__file__).resolve().parents[2] / "worlds" / "ex06_camera_capture.wbt"
+    out = subprocess.run([sys.executable, "-m", "wbtc.cli", "run", str(world), "--duration", "0.2"], env=env,
+                         capture_output=True, text=True, timeout=120)
+    assert out.returncode == 0, out.stderr
+    assert "wbtc: the display ':97' does not answer; running headless" in out.stderr
+    assert "[e-puck] Color of the central pixel: R=" in out.stdout  # the camera drew

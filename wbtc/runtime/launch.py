@@ -96,4 +96,36 @@ def _chain(hooks: list[Callable[[Simulation], bool]]) -> Callable[[Simulation], 
 
 
 def _has_display() -> bool:
-    return bool(os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")) or sys.platform == "darwin"
+    """True when a viewer window can open; a named display that does not answer means headless."""
+    if sys.platform == "darwin":
+        return True
+    named = os.environ.get("WAYLAND_DISPLAY") or os.environ.get("DISPLAY")
+    if not named:
+        return False
+    if _display_answers():
+        return True
+    # MuJoCo's viewer would end the process on this display (GLFW fails in its C code, out of
+    # Python's reach): run headless, and let cameras render with headless OpenGL too.
+    print(f"wbtc: the display {named!r} does not answer; running headless", file=sys.stderr)
+    if not os.environ.get("MUJOCO_GL"):
+        import ctypes.util
+
+        os.environ["MUJOCO_GL"] = "egl" if ctypes.util.find_library("EGL") else "osmesa"
+        os.environ.setdefault("PYOPENGL_PLATFORM", os.environ["MUJOCO_GL"])
+    return False
+
+
+def _display_answers() -> bool:
+    """Whether GLFW (what MuJoCo's viewer opens its window with) can start on this display."""
+    import warnings
+
+    try:
+        import glfw
+    except ImportError:  # no GLFW binding: let MuJoCo's viewer try
+        return True
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the binding warns about the failure it then reports
+        started = bool(glfw.init())
+    if started:
+        glfw.terminate()
+    return started
