@@ -11,5 +11,3 @@ class Accelerometer(Vector3Sensor):
     _C = "wb_accelerometer"
     _TYPES = ("Accelerometer",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 from . import _session
 from .device import checked
-from .sensor import NAN, Sensor, flat_lookup_table
+from .sensor import NAN, ScalarSensor, flat_lookup_table
 
 _KINDS = {"generic": 0, "infra-red": 1, "sonar": 2, "laser": 3}
 
 
-class DistanceSensor(Sensor):
+class DistanceSensor(ScalarSensor):
     """A DistanceSensor node; ``getValue()`` is NaN until the first sample after ``enable()``."""
 
     GENERIC = 0
@@ -19,20 +19,12 @@ class DistanceSensor(Sensor):
     _C = "wb_distance_sensor"
     _TYPES = ("DistanceSensor",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
-        state.value = NAN
+        ScalarSensor._setup(state, session)
         outputs = [float(row[1]) for row in state.field("lookupTable", [[0, 0, 0], [0.1, 1000, 0]])]
         state.min_value = min(outputs) if outputs else 0.0
         state.max_value = max(outputs) if outputs else 0.0
-
-    @checked("get_value", NAN)
-    def getValue(self) -> float:
-        """The last sampled value (NaN before the first sample)."""
-        return self._sampled("get_value").value
 
     @checked("get_max_value", NAN)
     def getMaxValue(self) -> float:
@@ -84,7 +76,3 @@ class DistanceSensor(Sensor):
         """The sensor type constant."""
         return self.getType()
 
-    @property
-    def value(self) -> float:
-        """The last sampled value."""
-        return self.getValue()

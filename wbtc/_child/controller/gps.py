@@ -21,9 +21,6 @@ class GPS(Sensor):
     _C = "wb_gps"
     _TYPES = ("GPS",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.value = [NAN] * 6

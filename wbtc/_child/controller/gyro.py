@@ -11,5 +11,3 @@ class Gyro(Vector3Sensor):
     _C = "wb_gyro"
     _TYPES = ("Gyro",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)

@@ -37,9 +37,6 @@ class InertialUnit(Sensor):
     _C = "wb_inertial_unit"
     _TYPES = ("InertialUnit",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.value = [NAN] * 4

@@ -20,9 +20,6 @@ class Lidar(Sensor):
     _C = "wb_lidar"
     _TYPES = ("Lidar",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.resolution = int(state.field("horizontalResolution", 512))

@@ -5,14 +5,14 @@ from __future__ import annotations
 from . import _session
 from .constants import LINEAR, ROTATIONAL
 from .device import checked
-from .sensor import NAN, Sensor
+from .sensor import ScalarSensor
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
     from typing import Any
 
 
-class PositionSensor(Sensor):
+class PositionSensor(ScalarSensor):
     """A PositionSensor node; ``getValue()`` is NaN until the first sample."""
 
     ROTATIONAL = ROTATIONAL
@@ -20,20 +20,12 @@ class PositionSensor(Sensor):
     _C = "wb_position_sensor"
     _TYPES = ("PositionSensor",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
-        state.value = NAN
+        ScalarSensor._setup(state, session)
         motor = session.by_tag.get(state.info.get("motor")) if state.info.get("motor") is not None else None
         state.motor = motor
         state.kind = LINEAR if motor is not None and motor.type == "LinearMotor" else ROTATIONAL
-
-    @checked("get_value", NAN)
-    def getValue(self) -> float:
-        """The last sampled joint position."""
-        return self._sampled("get_value").value
 
     @checked("get_type", ROTATIONAL)
     def getType(self) -> int:
@@ -56,7 +48,6 @@ class PositionSensor(Sensor):
         tag = None if motor is None else motor.info.get("brake")
         return None if tag is None else Brake(int(tag))
 
-    value = property(getValue, doc="The last sampled joint position.")
     type = property(getType, doc="ROTATIONAL or LINEAR.")
     motor = property(getMotor, doc="The Motor on the same joint, or None.")
     brake = property(getBrake, doc="The Brake on the same joint, or None.")

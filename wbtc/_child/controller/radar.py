@@ -26,9 +26,6 @@ class Radar(Sensor):
     _C = "wb_radar"
     _TYPES = ("Radar",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.value = []

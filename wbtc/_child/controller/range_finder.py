@@ -19,9 +19,6 @@ class RangeFinder(Sensor):
     _C = "wb_range_finder"
     _TYPES = ("RangeFinder",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.width = int(state.field("width", 64))

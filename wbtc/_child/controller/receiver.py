@@ -30,9 +30,6 @@ class Receiver(Sensor):
     _C = "wb_receiver"
     _TYPES = ("Receiver",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.queue = []

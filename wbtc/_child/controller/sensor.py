@@ -108,3 +108,21 @@ class Vector3Sensor(Sensor):
     def lookup_table(self) -> list[float]:
         """The flat lookup table."""
         return self.getLookupTable()
+
+
+class ScalarSensor(Sensor):
+    """A sensor that reads one number: NaN until its first sample (``getValue()``, ``value``)."""
+
+    @staticmethod
+    def _setup(state: _session.DeviceState, session: _session.Session) -> None:
+        state.value = NAN
+
+    @checked("get_value", NAN)
+    def getValue(self) -> float:
+        """The last sampled value (NaN before the first sample)."""
+        return self._sampled("get_value").value
+
+    @property
+    def value(self) -> float:
+        """The last sampled value."""
+        return self.getValue()

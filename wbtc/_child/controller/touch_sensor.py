@@ -22,9 +22,6 @@ class TouchSensor(Sensor):
     _C = "wb_touch_sensor"
     _TYPES = ("TouchSensor",)
 
-    def __init__(self, name: str | int, sampling_period: int | None = None) -> None:
-        super().__init__(name, sampling_period)
-
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
         state.value = [NAN, NAN, NAN]
