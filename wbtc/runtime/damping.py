@@ -1,16 +1,17 @@
 """The linear part of Webots' Damping: a drag on each damped tree's centre of mass.
 
 The compiler gives a damped Solid tree's free joint its rotational damping and leaves the linear
-one here (`DeviceTable.linear_damping`, see `wbtc.compile.damping`): before each basic step, a force
-−c·v on the tree's centre of mass, v its velocity, as a generalised force (`qfrc_applied`, each
-tree replacing its own previous push), held for the step's substeps (explicit: c/m is at most
-−ln(0.001) ≈ 6.9 per second, small against a basic step).
+one here (`DeviceTable.linear_damping`, see `wbtc.compile.damping`): before each basic step, a
+force −c·v on the tree's centre of mass, v its velocity, as a `Push`, held for the step's substeps
+(explicit: c/m is at most −ln(0.001) ≈ 6.9 per second, small against a basic step).
 """
 
 from __future__ import annotations
 
 import mujoco
 import numpy as np
+
+from wbtc.runtime.pushes import Push
 
 
 class CentreDrag:
@@ -19,7 +20,7 @@ class CentreDrag:
     def __init__(self, model: mujoco.MjModel, joint: str, coefficient: float) -> None:
         self.body = int(model.joint(joint).bodyid[0])
         self.coefficient = coefficient
-        self._applied: tuple[mujoco.MjData | None, np.ndarray] = (None, np.zeros(model.nv))
+        self.push = Push()
 
     def update(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """Push the tree's centre of mass against its velocity for the coming step."""
@@ -29,13 +30,7 @@ class CentreDrag:
         mujoco.mj_objectVelocity(model, data, mujoco.mjtObj.mjOBJ_XBODY, self.body, velocity, 0)
         spin, origin = velocity[:3], data.xpos[self.body]
         linear = velocity[3:] + np.cross(spin, centre - origin)
-        forces = np.zeros(model.nv)
-        mujoco.mj_applyFT(model, data, -self.coefficient * linear, np.zeros(3), centre, self.body, forces)
-        last_data, last = self._applied
-        if last_data is data:
-            data.qfrc_applied -= last
-        data.qfrc_applied += forces
-        self._applied = (data, forces)
+        self.push.apply(model, data, -self.coefficient * linear, np.zeros(3), centre, self.body)
 
 
 def drags(model: mujoco.MjModel, linear_damping: dict[str, float]) -> list[CentreDrag]:

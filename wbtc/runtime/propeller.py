@@ -9,9 +9,8 @@ step, pushes the Solid above it with
     Q = q1 |ω| ω − q2 |ω| V   (clamped to the motor's maxTorque), a torque of −Q about the shaft axis,
 
 V being the velocity of the center of thrust along the shaft axis. Here the force and torque are
-generalised forces of the body the compiler put the propeller on (`qfrc_applied`, each propeller
-replacing its own previous contribution), held for the basic step's substeps as Webots holds them
-for its physics step.
+a `Push` on the body the compiler put the propeller on, held for the basic step's substeps as Webots
+holds them for its physics step.
 
 Not honoured yet: the helix does not turn on screen, and the fast helix is never shown (the
 compiler draws the slow one); torque feedback reads 0.
@@ -24,6 +23,7 @@ import numpy as np
 
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.motors import Motor
+from wbtc.runtime.pushes import Push
 
 
 class PropellerMotor(Motor):
@@ -40,7 +40,7 @@ class PropellerMotor(Motor):
         self.angle = 0.0
         self.thrust = self.torque_value = 0.0
         self._velocity6 = np.zeros(6)
-        self._applied: tuple[mujoco.MjData | None, np.ndarray] = (None, np.zeros(model.nv))
+        self.push = Push()  # its share of qfrc_applied
 
     def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
         """Turn the helix for the coming basic step and apply its thrust and torque to the body."""
@@ -58,14 +58,7 @@ class PropellerMotor(Motor):
         self.thrust = t1 * spin - t2 * abs(omega) * along
         torque = q1 * spin - q2 * abs(omega) * along
         self.torque_value = min(max(torque, -self.max_torque), self.max_torque)
-        forces = np.zeros(model.nv)
-        if self.body > 0 and (self.thrust or self.torque_value):
-            mujoco.mj_applyFT(model, data, self.thrust * axis, -self.torque_value * axis, point, self.body, forces)
-        last_data, last = self._applied
-        if last_data is data:  # take this propeller's previous push back before giving the new one
-            data.qfrc_applied -= last
-        data.qfrc_applied += forces
-        self._applied = (data, forces)
+        self.push.apply(model, data, self.thrust * axis, -self.torque_value * axis, point, self.body)
 
     def feedback(self, data: mujoco.MjData) -> float:
         """Torque feedback: not modelled for a propeller's motor (see the module docstring)."""
