@@ -7,17 +7,16 @@ primitive axes along y), and where its relative URLs start.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import mujoco
 import numpy as np
 
 from wbtc.compile.table import DeviceTable
 from wbtc.errors import Diagnostic, Span
-from wbtc.proto.model import load_proto
+from wbtc.proto.model import written_version
 from wbtc.resources import protos_dir
 from wbtc.scene.model import Node, Scene
-from wbtc.vrml.header import R2022A, Version
+from wbtc.vrml.header import Version, before_r2022a
 
 _LIBRARY = str(protos_dir())
 #: MuJoCo geom groups: the viewer shows 0-2 by default, so visuals go in 1 and collisions in 3.
@@ -89,19 +88,12 @@ class CompileContext:
 
     def legacy_axes(self, node: Node) -> bool:
         """True when the file that wrote this node predates R2022a (primitives along y, cameras along -z)."""
-        version = self.file_version(node.span.file)
-        return version is not None and version < R2022A
+        return before_r2022a(self.file_version(node.span.file))
 
     def file_version(self, path: str) -> Version | None:
         """The header version of the world or PROTO file at `path`."""
         if path not in self._versions:
-            if path == str(self.scene.path):
-                self._versions[path] = self.scene.version
-            elif path.endswith(".proto") and Path(path).is_file():
-                model = load_proto(Path(path))
-                self._versions[path] = model.version or self.scene.version
-            else:
-                self._versions[path] = self.scene.version
+            self._versions[path] = written_version(path, str(self.scene.path), self.scene.version)
         return self._versions[path]
 
 

@@ -38,7 +38,7 @@ from wbtc.compile.context import CompileContext
 from wbtc.compile.frames import axis_angle_quat, quat_conj
 from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
-from wbtc.vrml.header import R2022A
+from wbtc.vrml.header import before_r2022a
 
 #: FLU axes onto RUB axes: x (forward) → −z, y (left) → −x, z (up) → +y.
 FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
@@ -51,8 +51,7 @@ UP_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
 
 
 def _legacy_file(ctx: CompileContext, path: str) -> bool:
-    version = ctx.file_version(path)
-    return version is not None and version < R2022A
+    return before_r2022a(ctx.file_version(path))
 
 
 def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.ndarray | None:

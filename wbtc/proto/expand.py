@@ -23,13 +23,13 @@ from typing import Any
 import numpy as np
 
 from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
-from wbtc.proto.model import InterfaceField, ProtoModel, load_proto
+from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.model import Node, Scene, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
-from wbtc.vrml.header import R2022A, Version
+from wbtc.vrml.header import before_r2022a
 from wbtc.vrml.parser import parse_body
 from wbtc.vrml.values import coerce, format_value
 
@@ -235,17 +235,11 @@ class Expander:
         interface = model.fields.get("size")
         if "size" not in node.fields or interface is None or interface.type != "SFVec3f":
             return
-        if source.path.parent.name == "robots" or not _older(self._version(str(node.span.file))):
-            return
-        if _older(model.version):
+        written = written_version(str(node.span.file), str(self.scene.path), self.scene.version)
+        if source.path.parent.name == "robots" or not before_r2022a(written) or before_r2022a(model.version):
             return
         x, height, z = values["size"]
         values["size"] = [x, z, height]
-
-    def _version(self, path: str) -> Version | None:
-        if path == str(self.scene.path):
-            return self.scene.version
-        return load_proto(Path(path)).version if path.endswith(".proto") and Path(path).is_file() else None
 
     def _typed(self, raw: Any, interface: InterfaceField, model: ProtoModel, span: Span) -> Any:
         if isinstance(raw, Typed):
@@ -359,11 +353,6 @@ def _one_element(value: Any, mf_type: str) -> Any:
     if mf_type in ("MFString", "MFBool", "MFNode"):
         return [value]
     return np.asarray([value], dtype=np.int64 if mf_type == "MFInt32" else np.float64)
-
-
-def _older(version: Version | None) -> bool:
-    """True for a file written before R2022a (Webots' PROTOs then had y up)."""
-    return version is not None and version < R2022A
 
 
 def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:

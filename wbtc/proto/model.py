@@ -87,6 +87,17 @@ def _interface(proto: s.ProtoSyntax, path: Path) -> dict[str, InterfaceField]:
     return fields
 
 
+def written_version(path: str, world: str, world_version: Version | None) -> Version | None:
+    """The header version of the file a node was written in: the world's, or a PROTO file's.
+
+    A PROTO file without a header, or any other path (a node imported from a string), counts as written
+    with the world.
+    """
+    if path != world and path.endswith(".proto") and Path(path).is_file():
+        return load_proto(Path(path)).version or world_version
+    return world_version
+
+
 @lru_cache(maxsize=512)
 def load_proto(path: Path) -> ProtoModel:
     """Read and cache a PROTO file.

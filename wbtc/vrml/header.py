@@ -70,6 +70,11 @@ R2022B = Version(2022, 1, 0, "R2022b")  # EXTERNPROTO lines
 R2023B = Version(2023, 1, 0, "R2023b")  # Pose node
 
 
+def before_r2022a(version: Version | None) -> bool:
+    """True for a file written before R2022a: Webots' primitives and PROTOs then stood along y."""
+    return version is not None and version < R2022A
+
+
 def read_header(text: str, path: str) -> tuple[Version, list[str]]:
     """Check the header line and collect the info comment block.
 
