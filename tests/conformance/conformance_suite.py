@@ -50,7 +50,9 @@ class Outcome:
 
 def all_tests() -> list[str]:
     """Every test id, sorted (`api/gps_speed`, ..., `physics/...`)."""
-    return [f"{suite}/{world.stem}" for suite in SUITES for world in sorted((HERE / suite / "worlds").glob("*.wbt"))]
+    # Worlds a test saves while it runs end in _temp.wbt (as in Webots' suite); they are not tests.
+    return [f"{suite}/{world.stem}" for suite in SUITES for world in sorted((HERE / suite / "worlds").glob("*.wbt"))
+            if not world.stem.endswith("_temp")]
 
 
 def world_of(test: str) -> Path:

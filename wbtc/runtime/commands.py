@@ -12,6 +12,8 @@ from collections.abc import Callable
 from typing import Any
 
 from wbtc.runtime.devices import Receiver
+from wbtc.runtime.scene_ops import store_pose
+from wbtc.runtime.scene_tree import to_typed
 from wbtc.runtime.simulation import RobotState, Simulation
 
 
@@ -80,6 +82,8 @@ _ROBOT_OPS = frozenset({"setCustomData", "keyboardEnable", "keyboardDisable", "b
 def _robot_command(robot: RobotState, op: str, args: tuple, now: float) -> None:
     if op == "setCustomData":
         robot.custom_data = str(args[0])
+        # Webots writes it into the Robot's customData field: a supervisor reads it there, worldSave keeps it.
+        store_pose(robot.entry.node, "customData", to_typed("SFString", robot.custom_data))
     elif op == "keyboardEnable":
         robot.keyboard_period = int(args[0])
         robot.keyboard_due = now + robot.keyboard_period if robot.keyboard_period > 0 else math.inf

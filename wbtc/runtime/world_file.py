@@ -84,5 +84,7 @@ def _prologue(source: Path, tree: SceneTree) -> str:
     lines = source.read_text(encoding="utf-8", errors="replace").splitlines(keepends=True)
     spans = [node.span.line for node in tree.visible_children(tree.root)
              if node.span is not None and Path(node.span.file).resolve() == source.resolve()]
-    first = min(spans) if spans else len(lines) + 1
+    # Line 1 is always the header: nodes imported from strings at run time carry spans counted from
+    # their own text's first line, which must not cut it off.
+    first = max(min(spans) if spans else len(lines) + 1, 2)
     return "".join(lines[:first - 1]).rstrip("\n") + "\n"
