@@ -11,6 +11,16 @@ EXPECTED = suite.expected_failures()
 TESTS = suite.all_tests()
 
 
+@pytest.fixture(scope="session")
+def conformance_runs(request: pytest.FixtureRequest) -> dict[str, Future[suite.Outcome]]:
+    """Start every selected conformance world at once (in parallel); each test waits for its own."""
+    # Defined here, not in a conftest.py: a second conftest module would shadow tests/conftest.py
+    # for the other test folders' `from conftest import ...`.
+    selected = [item.callspec.params["conformance_test"] for item in request.session.items
+                if hasattr(item, "callspec") and "conformance_test" in item.callspec.params]
+    return suite.run_many(selected)
+
+
 def test_expectations_name_existing_tests() -> None:
     assert sorted(set(EXPECTED) - set(TESTS)) == []
 
