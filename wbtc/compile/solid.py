@@ -15,8 +15,10 @@ inertials and every geom is massless to MuJoCo.
 Solids with `recognitionColors` are listed in the table for the runtime's camera recognition (and a
 Camera's entry gets its Recognition node's fields under `recognition`).
 
-Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `locked`, hidden
-`linearVelocity`/`angularVelocity`; Physics `damping` acts on the free joint only (see `damping`);
+A Solid with Physics starts with its `linearVelocity`/`angularVelocity` (the runtime sets them).
+
+Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `locked`, the initial velocity
+of a Solid without Physics; Physics `damping` acts on the free joint only (see `damping`);
 Robot `battery`, `cpuConsumption`.
 Robot `selfCollision FALSE` (the default) excludes every pair of the robot's colliding bodies.
 """
@@ -32,8 +34,7 @@ from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.table import Recognizable, RobotEntry, plain
 from wbtc.scene.model import Node
 
-_UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "linearVelocity",
-                         "angularVelocity", "battery"})
+_UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
 JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
 #: Mass of a body that moves on a joint but has no Physics node (Webots moves it kinematically).
 KINEMATIC_MASS = 1e-3
@@ -148,6 +149,8 @@ class BodyBuilder:
                                                        str(node.get("model") or "")))
         physics = node.get("physics")
         has_physics = isinstance(physics, Node)
+        if has_physics:
+            _initial_velocity(ctx, node, body.name)
         top_level = parent is ctx.spec.worldbody
         moves = dynamic or has_physics or joint_frame is not None
         if top_level and has_physics:
@@ -303,3 +306,15 @@ def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, 
     for i in range(3):
         inertia[i, i] = max(inertia[i, i], floor)
     return com, inertia
+
+
+def _initial_velocity(ctx: CompileContext, node: Node, body_name: str) -> None:
+    """Record a Solid's initial `linearVelocity`/`angularVelocity` (world axes) for the runtime to set.
+
+    MuJoCo has no per-body initial velocity, so the simulation sets the joint velocities that give
+    this twist when it starts (see `runtime.poses.apply_initial_velocities`).
+    """
+    linear = [float(v) for v in node.get("linearVelocity")]
+    angular = [float(v) for v in node.get("angularVelocity")]
+    if any(linear) or any(angular):
+        ctx.table.initial_velocities[body_name] = (linear, angular)

@@ -79,7 +79,32 @@ class Simulation:
         self.packets: list[tuple[Emitter, bytes]] = []
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
         mujoco.mj_forward(self.model, self.data)
+        self._start_velocities()
         self.robots = [self._robot(entry) for entry in self.table.robots]
+
+    def _start_velocities(self) -> None:
+        """Start each Solid with Physics at its written `linearVelocity`/`angularVelocity`.
+
+        The fields are the body's twist in world axes (linear: of its centre of mass, as ODE's bodies).
+        The body's own joints get the velocities that come closest to it (least squares over the body's
+        degrees of freedom: exact for a free joint, the projection on the axis for a hinge or slider).
+        """
+        model, data = self.model, self.data
+        if not self.table.initial_velocities:
+            return
+        jacp, jacr = np.zeros((3, model.nv)), np.zeros((3, model.nv))
+        for name, (linear, angular) in self.table.initial_velocities.items():
+            body = model.body(name).id
+            first = int(model.body_dofadr[body])
+            dofs = list(range(first, first + int(model.body_dofnum[body])))
+            if not dofs:
+                continue
+            mujoco.mj_jacBodyCom(model, data, jacp, jacr, body)
+            jac = np.vstack([jacp[:, dofs], jacr[:, dofs]])
+            # The fields are in the world's axes; the model is ENU (NUE worlds are turned).
+            twist = np.concatenate([self.to_model @ np.asarray(v, float) for v in (linear, angular)])
+            data.qvel[dofs] = np.linalg.lstsq(jac, twist, rcond=None)[0]
+        mujoco.mj_forward(model, data)
 
     def _robot(self, entry: RobotEntry) -> RobotState:
         body = self.model.body(entry.body).id
