@@ -6,7 +6,8 @@ their parent's body: Webots merges those into the parent's rigid body too. Webot
 rules then fall out of MuJoCo's own: a top-level Solid with Physics gets a free joint; any other
 Solid not reached through a Joint has no joint, so MuJoCo welds it to its parent: to the static
 world when the parent is static (Webots' fixed joint), into the parent's rigid body when the
-parent moves (Webots' implicit solid merging). Group, Pose and Transform are frames, not bodies.
+parent moves (Webots' implicit solid merging). Group, Pose and Transform are frames, not bodies;
+a top-level Billboard is a body at the Viewpoint's pose (its children face the view).
 
 Masses come from Physics nodes only: density × the volume of the Solid's own bounding objects, or
 `mass`; `centerOfMass` and `inertiaMatrix` override the computed ones. Bodies get explicit
@@ -32,7 +33,7 @@ from wbtc.compile import appearance, damping, device, geometry, joint, legacy_pr
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.table import Recognizable, RobotEntry, plain
-from wbtc.scene.model import Node
+from wbtc.scene.model import Node, Scene
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
 JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
@@ -68,7 +69,9 @@ class BodyBuilder:
             return  # an unresolved PROTO: the PROTO stage already warned
         if node.is_a("Solid"):
             self.add_solid(node, body, frame, robot, dynamic)
-        elif kind in ("Group", "Billboard"):
+        elif kind == "Billboard":
+            self._billboard(node, body, frame, robot, dynamic)
+        elif kind == "Group":
             self.walk_children(node.get("children"), body, frame, robot, dynamic, node)
         elif kind in ("Pose", "Transform"):
             scale = np.asarray(node.get("scale"), dtype=float) if kind == "Transform" else None
@@ -88,6 +91,28 @@ class BodyBuilder:
             propeller.add_propeller(self, node, body, frame, robot)
         elif kind in ("CadShape", "Fluid", "Skin", "Muscle"):
             self.ctx.warn(f"{kind} is not supported by wbtc yet; it is left out", node.span)
+
+    def _billboard(self, node: Node, body: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,
+                   dynamic: bool) -> None:
+        """A Billboard: its children in the Viewpoint's frame, so that they always face the view.
+
+        Webots moves a Billboard's frame with the viewpoint (position and orientation), which makes
+        its children an overlay fixed to the view. A supervisor's write to the Viewpoint recompiles
+        the model, so placing the body at the Viewpoint's pose keeps up with it. A Billboard inside
+        a moving body, or in a world without a Viewpoint, stays a Group.
+        """
+        viewpoint = world_viewpoint(self.ctx.scene)
+        if viewpoint is None or body is not self.ctx.spec.worldbody:
+            self.walk_children(node.get("children"), body, frame, robot, dynamic, node)
+            return
+        rotation = viewpoint.get("orientation")
+        pose = frame.compose(np.asarray(viewpoint.get("position"), dtype=float),
+                             axis_angle_quat((rotation[0], rotation[1], rotation[2]), rotation[3]))
+        board = body.add_body()
+        board.name = self.ctx.unique("body", "billboard")
+        board.pos, board.quat = pose.pos, pose.quat
+        board.info = info(node)
+        self.walk_children(node.get("children"), board, Frame.identity(), robot, dynamic, node)
 
     def walk_children(self, children: list | None, body: mujoco.MjsBody, frame: Frame,
                       robot: RobotEntry | None, dynamic: bool, owner: Node | None = None) -> None:
@@ -306,6 +331,11 @@ def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, 
     for i in range(3):
         inertia[i, i] = max(inertia[i, i], floor)
     return com, inertia
+
+
+def world_viewpoint(scene: Scene) -> Node | None:
+    """The world's first Viewpoint node, or None."""
+    return next((node for node in scene.nodes if node.base_type == "Viewpoint"), None)
 
 
 def _initial_velocity(ctx: CompileContext, node: Node, body_name: str) -> None:

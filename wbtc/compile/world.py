@@ -96,14 +96,18 @@ def add_viewpoint(node: Node, ctx: CompileContext, root: Frame) -> None:
 
 
 def add_background(node: Node, ctx: CompileContext) -> None:
-    """Background's first sky colour as MuJoCo's haze and a gradient skybox."""
+    """Background's first sky colour as MuJoCo's haze and a plain skybox.
+
+    Webots fills the sky with one colour when `skyColor` has one entry; the skybox is MuJoCo's
+    gradient builtin with both ends that colour, so that turning the view does not change the sky.
+    """
     sky = node.get("skyColor")
     if sky is None or len(sky) == 0:
         return
     colour = np.clip(np.asarray(sky[0], dtype=float), 0, 1)
     texture = ctx.spec.add_texture(name="sky", type=mujoco.mjtTexture.mjTEXTURE_SKYBOX)
     texture.builtin = mujoco.mjtBuiltin.mjBUILTIN_GRADIENT
-    texture.rgb1, texture.rgb2 = colour, colour * 0.8
+    texture.rgb1, texture.rgb2 = colour, colour
     texture.width = texture.height = 64
     ctx.spec.visual.rgba.haze = [*colour, 1.0]
 
