@@ -117,6 +117,8 @@ class DeviceTable:
         recognizable: the Solids camera recognition can report, in scene order.
         linear_damping: for each damped free joint (by name), the force per velocity of its tree's centre
             of mass (N·s/m): Webots damps a body's centre of mass, which a joint damping cannot do.
+        gps_reference: WorldInfo.gpsReference (world axes, or latitude, longitude, altitude for WGS84).
+        gps_wgs84: whether WorldInfo.gpsCoordinateSystem is "WGS84".
         initial_velocities: for each body of a Solid with Physics whose `linearVelocity` or
             `angularVelocity` is not zero (by body name), those two vectors in the world's own axes.
     """
@@ -133,6 +135,8 @@ class DeviceTable:
     solids: dict[int, tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=dict)
     recognizable: list[Recognizable] = field(default_factory=list)
     initial_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
+    gps_reference: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    gps_wgs84: bool = False
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

@@ -63,6 +63,8 @@ def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
         ctx.unhonoured(info_node, _UNHONOURED_WORLD)
         gravity, step = float(info_node.get("gravity")), float(info_node.get("basicTimeStep"))
         table.random_seed = int(info_node.get("randomSeed"))
+        table.gps_reference = [float(v) for v in info_node.get("gpsReference")]
+        table.gps_wgs84 = str(info_node.get("gpsCoordinateSystem")) == "WGS84"
         damping = info_node.get("defaultDamping")
         ctx.default_damping = damping if isinstance(damping, Node) else None
     step = step if step > 0 else 32.0

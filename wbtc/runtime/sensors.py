@@ -15,11 +15,12 @@ Values are in the world's own frame (NUE worlds are read back through the table'
   on the sensor's body, through the lookup table and resolution.
 - LightSensor: Webots' irradiance formula (direct + ambient, attenuation, spot, colorFilter,
   optional occlusion by bounding objects), through the lookup table and resolution.
+- Altimeter: the device's coordinate along the world's up axis plus the gpsReference altitude.
 - Lidar: see `lidar`.
 
 Not honoured yet: InertialUnit/GPS/Compass noise models beyond Gaussian accuracy, Accelerometer
 and Gyro `resolution` per axis, LightSensor light intensities above 1 (the compiled MuJoCo lights
-clip them) and occlusion by transparent objects, Altimeter, Radar, Microphone.
+clip them) and occlusion by transparent objects, Radar, Microphone.
 """
 
 from __future__ import annotations
@@ -206,6 +207,31 @@ class GPS(Sensor):
         return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
 
 
+class Altimeter(Sensor):
+    """Altitude: the device's coordinate along the world's up axis plus the reference altitude.
+
+    As Webots: the reference is gpsReference's up component (its third, the altitude, in WGS84
+    worlds), `accuracy` is the σ of Gaussian noise, then `resolution` applies.
+    """
+
+    def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
+        super().__init__(entry, sim, skip_bodies)
+        self.accuracy = float(entry.fields.get("accuracy", 0.0))
+        self.resolution = float(entry.fields.get("resolution", -1.0))
+        # The up axis's index in the world's own axes: z in ENU, y in NUE.
+        self.up = sim.table.coordinate_system.index("U")
+        reference = sim.table.gps_reference
+        self.reference = float(reference[2] if sim.table.gps_wgs84 else reference[self.up])
+
+    def sample(self, sim: Simulation) -> float:
+        """The altitude (m)."""
+        pos, _ = self.frame(sim)
+        altitude = self.reference + float((sim.from_model @ pos)[self.up])
+        if self.accuracy > 0 and sim.noise_rng is not None:
+            altitude += float(sim.noise_rng.normal(0.0, self.accuracy))
+        return quantize(altitude, self.resolution)
+
+
 class TouchSensor(Sensor):
     """Bumper (1/0 on contact), force (the push along -x) or force-3d (the force in the device frame).
 
@@ -317,5 +343,5 @@ def _spot_factor(model: mujoco.MjModel, light: int, cos_alpha: float) -> float:
 SENSOR_TYPES: dict[str, type[Sensor]] = {
     "DistanceSensor": DistanceSensor, "PositionSensor": PositionSensor, "InertialUnit": InertialUnit,
     "Accelerometer": Vector3Sensor, "Gyro": Vector3Sensor, "Compass": Vector3Sensor, "GPS": GPS,
-    "TouchSensor": TouchSensor, "LightSensor": LightSensor,
+    "TouchSensor": TouchSensor, "LightSensor": LightSensor, "Altimeter": Altimeter,
 }
