@@ -146,6 +146,18 @@ def finish_led(entry: DeviceEntry, body: mujoco.MjsBody, ctx: CompileContext, fi
             geom.name = ctx.unique("geom", f"{prefix}{index - (first or 0)}")
         names.append(geom.name)
     entry.geoms = names
+    # Webots lights an LED through its material's emissiveColor, so a lit LED glows whatever the
+    # lighting; MuJoCo glows through a material's emission, and the runtime gives the lit shapes
+    # this material (white, fully emissive), coloured with the LED's colour.
+    if names and ctx.spec.material(led_material(entry)) is None:
+        material = ctx.spec.add_material(name=led_material(entry))
+        material.emission = 1.0
+        material.specular = 0.0
+
+
+def led_material(entry: DeviceEntry) -> str:
+    """The name of the glowing material an LED's lit shapes wear."""
+    return f"{entry.site}/lit"
 
 
 def add_joint_device(node: Node, joint: mujoco.MjsJoint, body: mujoco.MjsBody, robot: RobotEntry,

@@ -28,13 +28,19 @@ MATERIAL_AMBIENT = 0.2
 
 
 def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContext) -> mujoco.MjsLight | None:
-    """Add one light node to `body` at `frame`; None when the light is off."""
+    """Add one light node to `body` at `frame`; None when the light is off.
+
+    A light inside an LED is added even when off (inactive): the LED switches it on in its colour.
+    """
     ctx.unhonoured(node, _UNHONOURED)
-    if not node.get("on"):
+    if not node.get("on") and ctx.led_lights is None:
         return None
     kind = node.base_type
     light = body.add_light()
     light.name = ctx.unique("light", node.def_name or kind)
+    light.active = bool(node.get("on"))
+    if ctx.led_lights is not None:
+        ctx.led_lights.append((light.name, float(node.get("intensity")), float(node.get("ambientIntensity"))))
     light.info = info(node)
     colour = np.asarray(node.get("color"), dtype=float)
     intensity = float(node.get("intensity"))

@@ -32,7 +32,7 @@ import numpy as np
 from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
-from wbtc.compile.table import Recognizable, RobotEntry, plain
+from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
 from wbtc.scene.model import Node, Scene
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
@@ -113,6 +113,16 @@ class BodyBuilder:
         board.pos, board.quat = pose.pos, pose.quat
         board.info = info(node)
         self.walk_children(node.get("children"), board, Frame.identity(), robot, dynamic, node)
+
+    def _walk_device_children(self, entry: DeviceEntry | None, node: Node, body: mujoco.MjsBody, frame: Frame,
+                              robot: RobotEntry | None, dynamic: bool) -> None:
+        """A Solid's (or Solid device's) children; an LED collects the lights among them."""
+        led = entry is not None and entry.type == "LED"
+        if led:
+            self.ctx.led_lights = []
+        self.walk_children(node.get("children"), body, frame, robot, dynamic, node)
+        if led:
+            entry.lights, self.ctx.led_lights = self.ctx.led_lights or [], None
 
     def walk_children(self, children: list | None, body: mujoco.MjsBody, frame: Frame,
                       robot: RobotEntry | None, dynamic: bool, owner: Node | None = None) -> None:
@@ -197,7 +207,7 @@ class BodyBuilder:
             if linear or angular:
                 ctx.damped.append((free_joint.name, linear, angular))
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
-        self.walk_children(node.get("children"), body, inner, robot, moves, node)
+        self._walk_device_children(entry, node, body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)
         if node.is_a("Robot") and not node.get("selfCollision"):
@@ -231,7 +241,7 @@ class BodyBuilder:
         inner = Frame(pose.pos, pose.quat, pose.scale if scale is None else pose.scale * scale)
         entry = device.add_device(node, body, robot, ctx, self, inner)
         first = len(body.geoms)
-        self.walk_children(node.get("children"), body, inner, robot, dynamic, node)
+        self._walk_device_children(entry, node, body, inner, robot, dynamic)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx, first)
 

@@ -31,6 +31,8 @@ class DeviceEntry:
         joint: the joint a motor or position sensor acts on, if any.
         actuator: the velocity actuator of a motor, if any.
         geoms: visual geoms whose colour the device changes (LEDs), if any.
+        lights: an LED's lights, as (MuJoCo light name, intensity, ambientIntensity): the LED
+            switches them on in its colour.
         motor: for a position sensor or brake, the motor on the same joint (a device name).
         sensor: for a motor, the position sensor on the same joint (a device name).
         initial_position: the joint position written in the world (`JointParameters.position`).
@@ -49,6 +51,7 @@ class DeviceEntry:
     joint: str | None = None
     actuator: str | None = None
     geoms: list[str] = field(default_factory=list)
+    lights: list[tuple[str, float, float]] = field(default_factory=list)
     motor: str | None = None
     sensor: str | None = None
     initial_position: float = 0.0

@@ -29,6 +29,8 @@ from typing import TYPE_CHECKING, Any
 import mujoco
 import numpy as np
 
+from wbtc.compile.device import led_material
+from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry, plain_fields
 from wbtc.runtime.recognition import Settings, Target, recognize, targets
 from wbtc.runtime.sensors import Sensor
@@ -36,6 +38,10 @@ from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
+
+
+def _material_names(model: mujoco.MjModel) -> set[str]:
+    return {model.material(i).name for i in range(model.nmat)}
 
 
 class Led:
@@ -49,6 +55,9 @@ class Led:
         self.colors = [list(c) for c in entry.fields.get("color", [[1, 0, 0]])]
         self.gradual = bool(entry.fields.get("gradual", False))
         self.value = 0
+        self.lights = [(model.light(name).id, intensity, ambient) for name, intensity, ambient in entry.lights]
+        lit = led_material(entry)
+        self.lit = model.material(lit).id if self.geoms and lit in _material_names(model) else -1
 
     def set(self, value: int, model: mujoco.MjModel) -> None:
         """Light the LED's shapes for `value` (see the module docstring)."""
@@ -59,8 +68,22 @@ class Led:
                 model.geom_rgba[g] = self.rgba[g]
                 model.geom_matid[g] = self.matid[g]
             else:
+                # A lit LED glows in its colour (Webots' emissiveColor), not in its material's.
                 model.geom_rgba[g] = [*colour, 1.0]
-                model.geom_matid[g] = -1  # a lit LED shows its own colour, not its material's
+                model.geom_matid[g] = self.lit
+                if self.lit >= 0:
+                    model.mat_rgba[self.lit] = [*colour, 1.0]
+        self._light_up(colour, model)
+
+    def _light_up(self, colour: list[float] | None, model: mujoco.MjModel) -> None:
+        """Webots switches an LED's lights on in its colour (their `color` field), and off with it."""
+        for light, intensity, ambient in self.lights:
+            model.light_active[light] = colour is not None
+            if colour is not None:
+                rgb = np.asarray(colour, dtype=float)
+                model.light_diffuse[light] = rgb * intensity
+                model.light_specular[light] = rgb * intensity * 0.3
+                model.light_ambient[light] = np.clip(rgb * ambient * MATERIAL_AMBIENT, 0.0, 1.0)
 
     def colour(self) -> list[float] | None:
         """The lit colour, or None when off."""
