@@ -129,6 +129,9 @@ def velocity(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | Non
         body = solid_body(sim, ancestor) if ancestor is not None else None
     if body is None:
         return [0.0] * 6
+    if body in sim.kinematic:
+        lin, ang = sim.kinematic[body]
+        return [float(v) for v in (*(sim.from_model @ lin), *(sim.from_model @ ang))]
     res = np.zeros(6)
     mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_BODY, body, res, 0)
     # MuJoCo gives [angular, linear] in world orientation at the body's origin; Webots wants [linear, angular].
@@ -137,17 +140,28 @@ def velocity(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | Non
 
 
 def set_velocity(sim: Simulation, node: Node, values: list[float]) -> None:
-    """Set a free Solid's linear and angular velocity (world frame); other bodies are left alone."""
+    """Set a Solid's linear and angular velocity (world frame).
+
+    A free body gets them as its joint velocities. A body without joints (a Solid without Physics,
+    a robot without Physics) is moved kinematically at that velocity every step, as Webots moves
+    such Solids; zero velocities stop it. Bodies on other joints are left alone.
+    """
     body = solid_body(sim, node)
     if body is None:
         return
     model = sim.model
     jnt = int(model.body_jntadr[body])
-    if jnt < 0 or model.jnt_type[jnt] != mujoco.mjtJoint.mjJNT_FREE:
-        return
-    adr = int(model.jnt_dofadr[jnt])
     lin = sim.to_model @ np.asarray(values[:3], dtype=float)
     ang = sim.to_model @ np.asarray(values[3:6], dtype=float)
+    if jnt < 0:
+        if np.any(lin) or np.any(ang):
+            sim.kinematic[body] = (lin, ang)
+        else:
+            sim.kinematic.pop(body, None)
+        return
+    if model.jnt_type[jnt] != mujoco.mjtJoint.mjJNT_FREE:
+        return
+    adr = int(model.jnt_dofadr[jnt])
     # A free joint's angular velocity is expressed in the body's own frame.
     sim.data.qvel[adr:adr + 3] = lin
     sim.data.qvel[adr + 3:adr + 6] = sim.data.xmat[body].reshape(3, 3).T @ ang

@@ -42,6 +42,10 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -
     sim.close()  # renderers belong to the old model
     sim.result, sim.model, sim.data, sim.table = result, model, data, result.table
     sim.generation += 1
+    # Kinematically moving bodies keep moving in the new model (found again by name).
+    names = {model.body(b).name: b for b in range(model.nbody)}
+    sim.kinematic = {names[old_model.body(b).name]: v for b, v in sim.kinematic.items()
+                     if old_model.body(b).name in names}
     sim.rays = RayCaster(model, data)
     sim.surface = SurfaceColours(model)
     mujoco.mj_forward(model, data)

@@ -78,6 +78,8 @@ class Simulation:
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes]] = []
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
+        # Bodies without joints that a supervisor set moving: body -> (linear, angular) velocity, model frame.
+        self.kinematic: dict[int, tuple[np.ndarray, np.ndarray]] = {}
         mujoco.mj_forward(self.model, self.data)
         self._start_velocities()
         self.robots = [self._robot(entry) for entry in self.table.robots]
@@ -105,6 +107,28 @@ class Simulation:
             twist = np.concatenate([self.to_model @ np.asarray(v, float) for v in (linear, angular)])
             data.qvel[dofs] = np.linalg.lstsq(jac, twist, rcond=None)[0]
         mujoco.mj_forward(model, data)
+
+    def _move_kinematic(self, ts: float) -> None:
+        """Advance the kinematically moving bodies by one step of their velocity (world frame)."""
+        model, data = self.model, self.data
+        for body, (lin, ang) in self.kinematic.items():
+            parent = int(model.body_parentid[body])
+            parent_mat = data.xmat[parent].reshape(3, 3)
+            position = data.xpos[body] + lin * ts
+            quat = np.array(data.xquat[body])
+            angle = float(np.linalg.norm(ang)) * ts
+            if angle > 0:
+                turn = np.zeros(4)
+                mujoco.mju_axisAngle2Quat(turn, ang / np.linalg.norm(ang), angle)
+                mujoco.mju_mulQuat(quat, turn, quat)  # a world-frame turn applies on the left
+            # body_pos/body_quat are relative to the parent body.
+            model.body_pos[body] = parent_mat.T @ (position - data.xpos[parent])
+            parent_conj = np.zeros(4)
+            mujoco.mju_negQuat(parent_conj, data.xquat[parent])
+            local = np.zeros(4)
+            mujoco.mju_mulQuat(local, parent_conj, quat)
+            model.body_quat[body] = local / np.linalg.norm(local)
+        mujoco.mj_kinematics(model, data)
 
     def _robot(self, entry: RobotEntry) -> RobotState:
         body = self.model.body(entry.body).id
@@ -149,6 +173,8 @@ class Simulation:
             self._drags = (model, drags(model, self.table.linear_damping))
         for drag in self._drags[1]:
             drag.update(model, data)
+        if self.kinematic:
+            self._move_kinematic(ts)
         mujoco.mj_step(model, data, nstep=self.substeps)
         if self.unstable_at is None:
             if self._badqacc[0] is not data:  # the warning's live view, made once per MjData
