@@ -122,7 +122,7 @@ def test_infra_red_emitters_and_receivers_need_each_other_in_their_cones():
                 sensor.enable(16, 0.0)
                 receivers[robot.entry.name] = sensor
     emitter = next(e for r in sim.robots for e in r.emitters.values() if isinstance(e, Emitter))
-    sim.packets.append((emitter, b"hello"))
+    sim.packets.append((emitter, b"hello", emitter.channel))
     sim.step()
     # "ahead" sits on the emitter's axis; "aside" is 90 degrees off its 0.5 rad cone; "looking away" is in
     # the emitter's cone but faces away from it with a cone of its own.

@@ -68,7 +68,7 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
         elif tag in robot.emitters:
             emitter = robot.emitters[tag]
             if op == "send":
-                sim.packets.append((emitter, bytes(args[0])))
+                sim.packets.append((emitter, bytes(args[0]), emitter.channel))  # the channel at send()
             elif op == "setChannel":
                 emitter.channel = int(args[0])
             elif op == "setRange":

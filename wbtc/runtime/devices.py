@@ -276,14 +276,18 @@ def _outside_cone(axis: np.ndarray, direction: np.ndarray, aperture: float) -> b
     return float(np.dot(axis, direction)) < math.cos(aperture / 2.0) - 1e-12
 
 
-def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes]], receivers: list[Receiver]) -> None:
-    """Hand the packets sent during the last step to every receiver that can hear them."""
-    for emitter, data in packets:
+def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes, int]], receivers: list[Receiver]) -> None:
+    """Hand the packets sent during the last step to every receiver that can hear them.
+
+    Each packet goes out on the channel its emitter had when `send()` was called (a controller
+    may change channels between two sends of one step, as Webots allows).
+    """
+    for emitter, data, channel in packets:
         origin = sim.data.site_xpos[emitter.site].copy()
         for receiver in receivers:
             if receiver.period <= 0 or receiver.site == emitter.site:
                 continue
-            if -1 not in (emitter.channel, receiver.channel) and emitter.channel != receiver.channel:
+            if -1 not in (channel, receiver.channel) and channel != receiver.channel:
                 continue
             pos, mat = receiver.frame(sim)
             delta = origin - pos
@@ -302,4 +306,4 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes]], receivers: li
                 if hit < dist - 1e-3:
                     continue
             strength = 1.0 / (dist * dist) if dist > 0 else math.inf
-            receiver.incoming.append((data, emitter.channel, strength, [float(c) for c in mat.T @ direction]))
+            receiver.incoming.append((data, channel, strength, [float(c) for c in mat.T @ direction]))

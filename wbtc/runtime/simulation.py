@@ -76,7 +76,7 @@ class Simulation:
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
-        self.packets: list[tuple[Emitter, bytes]] = []
+        self.packets: list[tuple[Emitter, bytes, int]] = []  # (emitter, data, its channel at send())
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
         # Bodies without joints that a supervisor set moving: body -> (linear, angular) velocity, model frame.
         self.kinematic: dict[int, tuple[np.ndarray, np.ndarray]] = {}
