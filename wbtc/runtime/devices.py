@@ -249,6 +249,7 @@ class Receiver(Sensor):
         self.channel = int(entry.fields.get("channel", 0))
         self.kind = str(entry.fields.get("type", "radio"))
         self.aperture = float(entry.fields.get("aperture", -1))
+        self.owner: int | None = None  # id of the robot's table entry, set by the simulation (no delivery to oneself)
         self.incoming: list[tuple] = []
 
     def sample(self, sim: Simulation) -> list[tuple]:
@@ -267,6 +268,7 @@ class Emitter:
         self.range = float(entry.fields.get("range", -1))
         self.kind = str(entry.fields.get("type", "radio"))
         self.aperture = float(entry.fields.get("aperture", -1))
+        self.owner: int | None = None  # id of the robot's table entry, set by the simulation (no delivery to oneself)
 
 
 def _outside_cone(axis: np.ndarray, direction: np.ndarray, aperture: float) -> bool:
@@ -285,8 +287,9 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes, int]], receiver
     for emitter, data, channel in packets:
         origin = sim.data.site_xpos[emitter.site].copy()
         for receiver in receivers:
-            if receiver.period <= 0 or receiver.site == emitter.site:
-                continue
+            same_robot = receiver.owner is not None and receiver.owner == emitter.owner
+            if receiver.period <= 0 or receiver.site == emitter.site or same_robot:
+                continue  # disabled, or on the emitter's own robot: Webots never delivers those
             if -1 not in (channel, receiver.channel) and channel != receiver.channel:
                 continue
             pos, mat = receiver.frame(sim)

@@ -148,10 +148,13 @@ class Simulation:
             state.leds[tag] = Led(dev, self.model)
         elif dev.type == "Emitter":
             state.emitters[tag] = Emitter(dev, self.model)
+            state.emitters[tag].owner = id(state.entry)
         elif dev.type == "Camera" and dev.camera:
             state.sensors[tag] = Camera(dev, self, state.bodies)
         elif dev.type == "Receiver":
-            state.sensors[tag] = Receiver(dev, self, state.bodies)
+            receiver = Receiver(dev, self, state.bodies)
+            receiver.owner = id(state.entry)
+            state.sensors[tag] = receiver
         elif dev.type == "Lidar":
             state.sensors[tag] = Lidar(dev, self, state.bodies)
         elif dev.type in SENSOR_TYPES:
