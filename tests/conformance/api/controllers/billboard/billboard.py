@@ -5,8 +5,14 @@ import os
 import time
 
 from controller import Supervisor
-from ts_assertion import (ts_assert_boolean_equal, ts_assert_boolean_not_equal, ts_assert_int_equal,
-                          ts_assert_pointer_not_null, ts_send_success, ts_setup)
+from ts_assertion import (
+    ts_assert_boolean_equal,
+    ts_assert_boolean_not_equal,
+    ts_assert_int_equal,
+    ts_assert_pointer_not_null,
+    ts_send_success,
+    ts_setup,
+)
 
 NAMES = ["image0.png", "image1.png", "image2.png"]
 

@@ -1,8 +1,13 @@
 """Port of Webots' tests/physics/controllers/rolling_friction_supervisor: ContactProperties rollingFriction."""
 
 from controller import Supervisor
-from ts_assertion import (ts_assert_double_in_delta, ts_assert_double_is_bigger, ts_assert_doubles_in_delta,
-                          ts_send_success, ts_setup)
+from ts_assertion import (
+    ts_assert_double_in_delta,
+    ts_assert_double_is_bigger,
+    ts_assert_doubles_in_delta,
+    ts_send_success,
+    ts_setup,
+)
 
 TIME_STEP = 32
 
