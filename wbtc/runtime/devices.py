@@ -9,8 +9,9 @@
   bytes in the message when shared memory is unavailable. `Simulation.close` unlinks the blocks.
   `noise` adds Gaussian noise of σ = noise × 255 to every channel (none with noise off). With a
   Recognition node, `recognitionEnable(p)` adds `"objects"` to a sample every p ms (see `recognition`).
-- Emitter/Receiver: packets sent during a step reach the receivers on the same channel (−1 on
-  either side: every channel) within `range` at the next basic step; radio ignores obstacles,
+- Emitter/Receiver: packets sent during a step reach the receivers of the same type (radio,
+  serial, infra-red) on the same channel (−1 on either side: every channel), on other robots,
+  within `range` at the next basic step; radio ignores obstacles,
   infra-red needs a line of sight and each end within the other's `aperture` cone. Receivers
   queue them until their next sample.
 
@@ -290,6 +291,8 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes, int]], receiver
             same_robot = receiver.owner is not None and receiver.owner == emitter.owner
             if receiver.period <= 0 or receiver.site == emitter.site or same_robot:
                 continue  # disabled, or on the emitter's own robot: Webots never delivers those
+            if receiver.kind != emitter.kind:
+                continue  # radio, serial and infra-red devices only talk to their own kind
             if -1 not in (channel, receiver.channel) and channel != receiver.channel:
                 continue
             pos, mat = receiver.frame(sim)
@@ -298,7 +301,7 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes, int]], receiver
             if emitter.range >= 0 and dist > emitter.range:
                 continue
             direction = delta / dist if dist > 0 else np.array([1.0, 0.0, 0.0])
-            if "infra-red" in (emitter.kind, receiver.kind):
+            if emitter.kind == "infra-red":
                 # Infra-red: the receiver must be in the emitter's cone, the emitter in the receiver's
                 # (both around their +x axis), and nothing in between.
                 emitter_axis = sim.data.site_xmat[emitter.site].reshape(3, 3)[:, 0]
