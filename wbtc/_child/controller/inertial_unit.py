@@ -6,7 +6,7 @@ import math
 
 from . import _session
 from .device import checked
-from .sensor import NAN, Sensor
+from .sensor import NAN, Sensor, flat_lookup_table
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
@@ -56,6 +56,11 @@ class InertialUnit(Sensor):
     def getQuaternion(self) -> list[float]:
         """The orientation quaternion [x, y, z, w] in world coordinates."""
         return list(self._sampled("get_quaternion").value)
+
+    @checked("get_lookup_table", [])
+    def getLookupTable(self) -> list[float]:
+        """The (deprecated) lookupTable field as a flat list of 3·n floats, as C's wb_inertial_unit_get_lookup_table."""
+        return flat_lookup_table(self._s.field("lookupTable", []))
 
     @checked("get_noise", 0.0)
     def getNoise(self) -> float:
