@@ -8,7 +8,7 @@ PositionSensor does, relative to the zero found by undoing `position` about the 
 
 Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `suspensionAxis`,
 `stopERP`, `stopCFM`; BallJoint motors (`device2`/`device3`, and `device` on a ball joint);
-SolidReference endPoints (closed loops); Brake devices (listed, no effect).
+SolidReference endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
 """
 
 from __future__ import annotations

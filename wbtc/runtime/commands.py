@@ -11,6 +11,9 @@ import math
 from collections.abc import Callable
 from typing import Any
 
+import mujoco
+
+from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.devices import Receiver
 from wbtc.runtime.scene_ops import store_pose
 from wbtc.runtime.scene_tree import to_typed
@@ -21,14 +24,23 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
     """The INIT frame for a robot's controller."""
     entry = robot.entry
     names = {d.name: tag for tag, d in enumerate(entry.devices)}
+    # The motor, position sensor and brake of each joint axis know each other's tags.
+    axes: dict[tuple[str, int], dict[str, int]] = {}
+    for tag, dev in enumerate(entry.devices):
+        if dev.joint:
+            role = "brake" if dev.type == "Brake" else "sensor" if dev.type == "PositionSensor" else "motor"
+            axes.setdefault((dev.joint, dev.axis), {}).setdefault(role, tag)
     devices = []
     for tag, dev in enumerate(entry.devices):
         info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
                                 "model": str(dev.fields.get("model", "") or ""), "fields": dev.fields}
+        mates = axes.get((dev.joint, dev.axis), {}) if dev.joint else {}
         if dev.actuator or dev.propeller:
-            info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=None)
+            info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=mates.get("brake"))
         if dev.type == "PositionSensor":
-            info["motor"] = names.get(dev.motor or "")
+            info.update(motor=names.get(dev.motor or ""), brake=mates.get("brake"))
+        if dev.type == "Brake":
+            info.update(motor=mates.get("motor"), sensor=mates.get("sensor"))
         devices.append(info)
     return {
         "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
@@ -65,6 +77,8 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
         elif tag in robot.leds:
             if op == "set":
                 robot.leds[tag].set(int(args[0]), sim.model)
+        elif op == "setDampingConstant" and 0 <= tag < len(robot.entry.devices):
+            _brake(sim, robot.entry.devices[tag], float(args[0]))
         elif tag in robot.emitters:
             emitter = robot.emitters[tag]
             if op == "send":
@@ -73,6 +87,23 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
                 emitter.channel = int(args[0])
             elif op == "setRange":
                 emitter.range = float(args[0])
+
+
+def _brake(sim: Simulation, dev: DeviceEntry, damping: float) -> None:
+    """A Brake's damping constant resists its joint's motion: the joint's damping (N·m·s/rad or N·s/m).
+
+    MuJoCo's Euler integrator treats joint damping implicitly, so even a brake of 10^4 holds the
+    joint still without destabilising it. The joint's own dampingConstant is kept and added to.
+    """
+    if not dev.joint:
+        return
+    model = sim.model
+    joint = model.joint(dev.joint).id
+    # A hinge or slider has one degree of freedom; a ball joint's axes are its three.
+    several = model.jnt_type[joint] == mujoco.mjtJoint.mjJNT_BALL
+    dof = int(model.jnt_dofadr[joint]) + (max(dev.axis - 1, 0) if several else 0)
+    base = sim.joint_damping.setdefault(dof, float(model.dof_damping[dof]))
+    model.dof_damping[dof] = base + max(damping, 0.0)
 
 
 _ROBOT_OPS = frozenset({"setCustomData", "keyboardEnable", "keyboardDisable", "batterySensorEnable",

@@ -13,7 +13,9 @@ which the contact solver then sees, as ODE solves its motors with the contacts):
 
 An untouched motor targets the joint's initial position, so it holds the joint (Webots' rule).
 
-Not honoured yet: `multiplier` (coupled motors), Brake devices, kinematic joints (Solids without
+Brake devices add their damping constant to their joint's damping (see commands).
+
+Not honoured yet: `multiplier` (coupled motors), kinematic joints (Solids without
 Physics are given a small mass and driven like the others).
 """
 

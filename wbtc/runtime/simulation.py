@@ -80,6 +80,7 @@ class Simulation:
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
         # Bodies without joints that a supervisor set moving: body -> (linear, angular) velocity, model frame.
         self.kinematic: dict[int, tuple[np.ndarray, np.ndarray]] = {}
+        self.joint_damping: dict[int, float] = {}  # a braked dof's own damping (Brake adds to it)
         mujoco.mj_forward(self.model, self.data)
         self._start_velocities()
         self.robots = [self._robot(entry) for entry in self.table.robots]

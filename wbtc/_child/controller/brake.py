@@ -24,8 +24,13 @@ class Brake(Device):
 
     @staticmethod
     def _setup(state: _session.DeviceState, session: _session.Session) -> None:
-        state.motor = next((s for s in session.states if s.info.get("brake") == state.tag), None)
-        sensor = None if state.motor is None else state.motor.info.get("sensor")
+        # The simulator gives a brake the tags of the motor and position sensor on its joint axis;
+        # without them, the motor naming this brake leads to both.
+        motor, sensor = state.info.get("motor"), state.info.get("sensor")
+        state.motor = session.by_tag.get(motor) if motor is not None else next(
+            (s for s in session.states if s.info.get("brake") == state.tag), None)
+        if sensor is None and state.motor is not None:
+            sensor = state.motor.info.get("sensor")
         state.sensor = None if sensor is None else session.by_tag.get(sensor)
         state.kind = LINEAR if state.motor is not None and state.motor.type == "LinearMotor" else ROTATIONAL
 

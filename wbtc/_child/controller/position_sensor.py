@@ -44,8 +44,9 @@ class PositionSensor(ScalarSensor):
         """The Brake on the same joint, or None."""
         from .brake import Brake
 
-        motor = self._s.motor
-        tag = None if motor is None else motor.info.get("brake")
+        tag = self._s.info.get("brake")
+        if tag is None and self._s.motor is not None:
+            tag = self._s.motor.info.get("brake")
         return None if tag is None else Brake(int(tag))
 
     type = property(getType, doc="ROTATIONAL or LINEAR.")

@@ -21,7 +21,8 @@ INIT, simulator -> child, first frame on connection
     ``[in, out, noise]`` rows, colours ``[r, g, b]`` lists; an SFNode field (Camera ``focus``/``zoom``/
     ``recognition``) is read as None or a dict of that node's fields (optionally nested under a ``"fields"`` key).
     Motors add ``"position"`` (initial joint position), ``"sensor"`` and ``"brake"`` (tags or None); position
-    sensors add ``"motor"`` (tag or None). Tags are the ``getDeviceByIndex`` indices. The keyboard is no device.
+    sensors add ``"motor"`` and ``"brake"``, brakes ``"motor"`` and ``"sensor"`` (tags or None). Tags are
+    the ``getDeviceByIndex`` indices. The keyboard is no device.
 
 Step, child -> simulator
     ``("step", duration_ms: int, commands: list)``: the calls buffered since the previous step, in call order, as
