@@ -22,6 +22,8 @@ _LIBRARY = str(protos_dir())
 #: MuJoCo geom groups: the viewer shows 0-2 by default, so visuals go in 1 and collisions in 3.
 VISUAL_GROUP = 1
 COLLISION_GROUP = 3
+#: Mass of a body that moves on a joint but has no Physics node (Webots moves it kinematically).
+KINEMATIC_MASS = 1e-3
 
 
 @dataclass

@@ -175,8 +175,18 @@ def add_joint_device(node: Node, joint: mujoco.MjsJoint, body: mujoco.MjsBody, r
                         initial_position=position, axis=axis)
     if kind in ("RotationalMotor", "LinearMotor"):
         entry.actuator = _actuator(node, joint, ctx, robot)
+        _widen_limits(entry, position)
     _pair(entry, robot)
     robot.devices.append(entry)
+
+
+def _widen_limits(entry: DeviceEntry, position: float) -> None:
+    """A joint written outside its motor's position limits widens them to its position, as Webots does on load."""
+    low, high = float(entry.fields.get("minPosition", 0.0)), float(entry.fields.get("maxPosition", 0.0))
+    if low == high == 0.0:
+        return  # no limits
+    entry.fields["minPosition"] = min(low, position)
+    entry.fields["maxPosition"] = max(high, position)
 
 
 def _actuator(node: Node, joint: mujoco.MjsJoint, ctx: CompileContext, robot: RobotEntry) -> str:

@@ -19,7 +19,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import device
-from wbtc.compile.context import COLLISION_GROUP, info
+from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, info
 from wbtc.compile.frames import Frame, quat_conj, quat_rotate
 from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
@@ -45,11 +45,14 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
     """Add a Joint node: its endPoint as a child body, the MuJoCo joint(s) on it, and its devices."""
     ctx = builder.ctx
     end = node.get("endPoint")
-    if not isinstance(end, Node) or not end.is_a("Solid"):
-        if isinstance(end, Node) and end.base_type == "SolidReference":
-            ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
+    if isinstance(end, Node) and end.base_type == "SolidReference":
+        ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
         return
     kind = node.base_type
+    if not isinstance(end, Node) or not end.is_a("Solid"):
+        if robot is not None:
+            _without_end_point(builder, node, kind, body, frame, robot)
+        return
     first = node.get("jointParameters")
     first_type = {"SliderJoint": "JointParameters", "BallJoint": "BallJointParameters"}.get(kind,
                                                                                             "HingeJointParameters")
@@ -66,6 +69,26 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
         own = robot.devices[below:below + first_count]
         del robot.devices[below:below + first_count]
         robot.devices[mark:mark] = own
+
+
+def _without_end_point(builder: BodyBuilder, node: Node, kind: str, body: mujoco.MjsBody, frame: Frame,
+                       robot: RobotEntry) -> None:
+    """A Joint without endPoint: Webots keeps its devices (a motor turning nothing, a sensor reading it).
+
+    An empty, nearly massless body stands in for the endPoint, so the devices exist, keep their
+    indices and read the joint as Webots does; it has no geometry and pushes nothing.
+    """
+    ctx = builder.ctx
+    first = node.get("jointParameters")
+    first_type = {"SliderJoint": "JointParameters", "BallJoint": "BallJointParameters"}.get(kind,
+                                                                                            "HingeJointParameters")
+    child = body.add_body()
+    child.name = ctx.unique("body", f"{robot.name}/{kind.lower()}_end")
+    child.pos, child.quat = frame.pos, frame.quat
+    child.explicitinertial = True
+    child.mass = KINEMATIC_MASS
+    child.inertia = [KINEMATIC_MASS * 1e-4] * 3
+    _add_joints(builder, node, kind, child, frame, robot, first, first_type)
 
 
 def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBody, frame: Frame,

@@ -30,15 +30,13 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller
-from wbtc.compile.context import CompileContext, info
+from wbtc.compile.context import KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
 from wbtc.scene.model import Node, Scene
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
 JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
-#: Mass of a body that moves on a joint but has no Physics node (Webots moves it kinematically).
-KINEMATIC_MASS = 1e-3
 
 
 def pose_quat(node: Node) -> np.ndarray:
