@@ -795,7 +795,7 @@ NODES: tuple[NodeDecl, ...] = (
     ]),
     node("Slot", "other", [
         f("type", "SFString", '""'),
-        f("endPoint", "SFNode", "NULL", "vrmlField", accepts="solid other"),
+        f("endPoint", "SFNode", "NULL", "vrmlField", accepts="solid other joint"),
     ], doc="connects two nodes of the same slot type"),
     node("SolidReference", "other", [
         f("solidName", "SFString", '""'),

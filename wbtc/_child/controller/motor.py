@@ -60,6 +60,14 @@ class Motor(Device):
         position = float(position)
         if _nan(position, "wb_motor_set_position", "position"):
             return
+        low, high = float(self._s.field("minPosition", 0.0)), float(self._s.field("maxPosition", 0.0))
+        if (low, high) != (0.0, 0.0) and not math.isinf(position):
+            # Webots keeps a motor with limits inside them: the target is clamped, with its warning.
+            if position > high:
+                _session.error(f"Warning: too big requested position: {position:g} > {high:g}")
+            elif position < low:
+                _session.error(f"Warning: too low requested position: {position:g} < {low:g}")
+            position = min(max(position, low), high)
         self._s.target = position
         self._queue("setPosition", position)
 
