@@ -63,6 +63,7 @@ class Motor:
         self.feedback_period = 0  # torque/force feedback sampling period, ms (0: disabled)
         self.feedback_due = math.inf
         self.feedback_value: float | None = None  # sampled since the last reply, else None
+        self.step_force: float | None = None  # the mean force of the last step, when feedback is on
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
 
@@ -127,7 +128,7 @@ class Motor:
         else:
             error = self.target - position
             self.integral += error * ts
-            derivative = (self.prev_error - error) / ts
+            derivative = (error - self.prev_error) / ts  # as WbMotor: the error's rate of change
             self.prev_error = error
             wanted = self.p * error + self.d * derivative + self.i * self.integral
             limit = abs(self.velocity)
@@ -150,7 +151,9 @@ class Motor:
         self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
 
     def feedback(self, data: mujoco.MjData) -> float:
-        """The torque/force the actuator applied (torque feedback)."""
+        """The torque/force the actuator applied over the last step (its mean over the substeps)."""
+        if self.step_force is not None:
+            return self.step_force
         return float(data.actuator_force[self.actuator])
 
     def enable_feedback(self, period: int, now_ms: float) -> None:

@@ -109,6 +109,29 @@ class Simulation:
             data.qvel[dofs] = np.linalg.lstsq(jac, twist, rcond=None)[0]
         mujoco.mj_forward(model, data)
 
+    def _integrate(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """The substeps of one basic step.
+
+        Motors with torque/force feedback enabled read the mean of their force over the substeps:
+        Webots' ODE motor reports the force of its one step, i.e. the impulse it gave over the step
+        (a servo reaching its velocity in the first substep would otherwise read almost 0).
+        """
+        motors = [m for r in self.robots for m in r.motors.values()
+                  if isinstance(m, Motor) and m.feedback_period > 0]
+        if not motors:
+            mujoco.mj_step(model, data, nstep=self.substeps)
+            return
+        actuators = [m.actuator for m in motors]
+        dofs = [m.dof_adr for m in motors]
+        total = np.zeros(len(motors))
+        for _ in range(self.substeps):
+            mujoco.mj_step(model, data)
+            # The servo's armature (see compile.device.tune_servos) is no part of the robot: the torque
+            # the joint receives is the actuator's less what accelerating the armature took.
+            total += data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs]
+        for motor, force in zip(motors, total / self.substeps, strict=True):
+            motor.step_force = float(force)
+
     def _move_kinematic(self, ts: float) -> None:
         """Advance the kinematically moving bodies by one step of their velocity (world frame)."""
         model, data = self.model, self.data
@@ -179,7 +202,7 @@ class Simulation:
             drag.update(model, data)
         if self.kinematic:
             self._move_kinematic(ts)
-        mujoco.mj_step(model, data, nstep=self.substeps)
+        self._integrate(model, data)
         if self.unstable_at is None:
             if self._badqacc[0] is not data:  # the warning's live view, made once per MjData
                 self._badqacc = (data, data.warning[_BADQACC])
