@@ -3,7 +3,8 @@
 The pipeline's stages are plain functions (see README's architecture section):
 `wbtc.vrml.parse_file` → `wbtc.scene.build_scene` → `wbtc.proto.expand.expand_scene` →
 `wbtc.compile.compiler.compile_scene` → `wbtc.runtime.simulation.Simulation`;
-`wbtc.pipeline` chains them.
+`wbtc.pipeline` chains them. `wbtc.run(world, ...)` runs a world from Python and returns a typed
+`wbtc.results.RunResult` (see `wbtc.api`).
 """
 
 from __future__ import annotations
@@ -23,3 +24,12 @@ def _choose_headless_gl() -> None:
 
 
 _choose_headless_gl()
+
+
+def __getattr__(name: str) -> object:
+    """`wbtc.run` is imported on first use: the command line's `check` does not need MuJoCo."""
+    if name == "run":
+        from wbtc.api import run
+
+        return run
+    raise AttributeError(f"module 'wbtc' has no attribute {name!r}")

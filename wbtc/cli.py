@@ -123,6 +123,34 @@ def run(
     raise typer.Exit(code)
 
 
+@app.command()
+def batch(
+    plan: Annotated[Path, typer.Argument(help="The plan (TOML): worlds, controllers, args, fields, seeds, grader.")],
+    workers: Annotated[int | None, typer.Option("--workers", help="Runs at once (default: the cores).")] = None,
+    resume: Annotated[bool, typer.Option("--resume", help="Skip the runs the results table already holds.")]
+    = False,
+    ray: Annotated[str | None, typer.Option("--ray", help="Run on a Ray cluster (ADDRESS, ray://..., or local).")]
+    = None,
+    output: Annotated[Path | None, typer.Option("-o", "--output", help="The results table (.csv, .jsonl, .parquet).")]
+    = None,
+) -> None:
+    """Run every combination of a plan on all cores (or a Ray cluster), graded into one table."""
+    from wbtc.batch.runner import run_batch
+
+    if workers is not None and workers < 1:
+        _guard(lambda: _fail("--workers must be at least 1"))
+    try:
+        summary = _guard(lambda: run_batch(plan, workers=workers, resume=resume, ray=ray, output=output))
+    except KeyboardInterrupt:
+        typer.echo("\nwbtc batch: interrupted; finished runs are in the table (--resume goes on)", err=True)
+        raise typer.Exit(130) from None
+    typer.echo(summary.line())
+
+
+def _fail(message: str) -> None:
+    raise WbtcError(message)
+
+
 def _missing(path: Path) -> None:
     raise WbtcError(f"no such world file: {path}")
 

@@ -23,6 +23,8 @@ import sys
 import tempfile
 import threading
 import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import IO, Any
 
@@ -30,6 +32,31 @@ from wbtc._child.controller.wire import FrameReader, WireClosed, recv_frame, sen
 from wbtc.resources import child_path
 
 NO_CONTROLLER = frozenset({"", "<none>", "<generic>"})
+
+#: Where a controller's output lines go: (robot name, "stdout" or "stderr", line without newline).
+OutputSink = Callable[[str, str, str], None]
+
+
+@dataclass
+class Substitutions:
+    """What a run changes in how robots' controllers start (`wbtc.run`, `wbtc batch`).
+
+    Attributes:
+        scripts: robot name to the Python file run instead of the world's controller.
+        args: robot name to the `sys.argv[1:]` given instead of the world's controllerArgs.
+        output: where controllers' output lines go (None: printed, prefixed with the robot's name).
+        started: every controller process started so far (a timeout kills those still running).
+    """
+
+    scripts: dict[str, Path] = field(default_factory=dict)
+    args: dict[str, list[str]] = field(default_factory=dict)
+    output: OutputSink | None = None
+    started: list[ControllerProcess] = field(default_factory=list)
+
+
+def print_output(robot: str, stream: str, line: str) -> None:
+    """The default sink: the line on wbtc's own stdout or stderr, prefixed with the robot's name."""
+    print(f"[{robot}] {line}", file=sys.stderr if stream == "stderr" else sys.stdout, flush=True)
 
 
 def find_controller(world: Path, name: str) -> Path | None:
@@ -76,8 +103,9 @@ class ControllerProcess:
         self._threads: list[threading.Thread] = []
 
     @classmethod
-    def start(cls, robot_name: str, script: Path, args: list[str]) -> ControllerProcess:
-        """Start `script` for `robot_name` with `args`."""
+    def start(cls, robot_name: str, script: Path, args: list[str],
+              output: OutputSink | None = None) -> ControllerProcess:
+        """Start `script` for `robot_name` with `args`; its output lines go to `output` (default: printed)."""
         ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
         command, extra_env = _runtime_ini(script.parent)
         env = dict(os.environ)
@@ -92,8 +120,8 @@ class ControllerProcess:
                                    stdin=subprocess.DEVNULL)
         theirs.close()
         proc = cls(robot_name, ours, process, script.stem)
-        proc._forward(process.stdout, sys.stdout)
-        proc._forward(process.stderr, sys.stderr)
+        proc._forward(process.stdout, "stdout", output or print_output)
+        proc._forward(process.stderr, "stderr", output or print_output)
         return proc
 
     @classmethod
@@ -113,14 +141,13 @@ class ControllerProcess:
         recv_frame(sock)  # ("hello", name)
         return cls(robot_name, sock, None, "<extern>")
 
-    def _forward(self, stream: IO[bytes] | None, sink: IO[str]) -> None:
+    def _forward(self, stream: IO[bytes] | None, name: str, sink: OutputSink) -> None:
         if stream is None:
             return
 
         def pump() -> None:
             for raw in iter(stream.readline, b""):
-                line = raw.decode("utf-8", "replace").rstrip("\n")
-                print(f"[{self.robot_name}] {line}", file=sink, flush=True)
+                sink(self.robot_name, name, raw.decode("utf-8", "replace").rstrip("\n"))
 
         thread = threading.Thread(target=pump, daemon=True)
         thread.start()

@@ -11,8 +11,10 @@ from __future__ import annotations
 import json
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
@@ -20,6 +22,7 @@ from wbtc.errors import Diagnostic
 from wbtc.pipeline import load_world
 from wbtc.runtime.animation import PageRecorder
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
+from wbtc.runtime.overrides import apply_overrides
 from wbtc.runtime.record import Recorder
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
@@ -28,23 +31,47 @@ from wbtc.runtime.supervisor import SupervisorHub
 from wbtc.runtime.viewer import open_viewer
 
 
+@dataclass
+class Prepared:
+    """A world ready to run: the simulation, its supervisor hub (if any), what compiling said."""
+
+    sim: Simulation
+    hub: SupervisorHub | None
+    warnings: list[Diagnostic]
+    unhonoured: list[Diagnostic]
+
+
+def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, noise: bool = True,
+            fields: Mapping[str, Any] | None = None) -> Prepared:
+    """Load, edit (`fields`, see `overrides`) and compile a world into a simulation ready to run.
+
+    Raises:
+        WbtcError: the world does not load or compile, or an override names nothing.
+    """
+    compile_options = CompileOptions(max_substep_ms=physics_step)
+    scene, expansion = load_world(world)
+    apply_overrides(scene, fields or {})
+    result = compile_scene(scene, compile_options)
+    unhonoured = [w for w in result.warnings if "not honoured" in w.message]
+    warnings = expansion.warnings + [w for w in result.warnings if w not in unhonoured]
+    sim = Simulation(result, seed=seed, noise=noise)
+    hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
+    if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
+        sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
+    return Prepared(sim, hub, warnings, unhonoured)
+
+
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
            json_output: bool, trace: Path | None, keys: Path | None, physics_step: float, noise: bool,
            warn: Callable[[list[Diagnostic]], None], record: Path | None = None) -> int:
     """Run a world as `wbtc run` does (`record`: the video or page to write); returns the process exit code."""
     key_script = read_keys(keys) if keys else []
-    compile_options = CompileOptions(max_substep_ms=physics_step)
-    scene, expansion = load_world(world)
-    result = compile_scene(scene, compile_options)
-    unhonoured = [w for w in result.warnings if "not honoured" in w.message]
-    warn(expansion.warnings + [w for w in result.warnings if w not in unhonoured])
-    if unhonoured:
-        print(f"wbtc: {len(unhonoured)} Webots fields of this world are not honoured yet "
+    prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise)
+    sim, hub = prepared.sim, prepared.hub
+    warn(prepared.warnings)
+    if prepared.unhonoured:
+        print(f"wbtc: {len(prepared.unhonoured)} Webots fields of this world are not honoured yet "
               f"(`wbtc compile` lists them)", file=sys.stderr)
-    sim = Simulation(result, seed=seed, noise=noise)
-    hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
-    if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
-        sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
     recorder = _recorder(sim, record)
     viewer = None if headless or not _has_display() else open_viewer(sim)
     hooks = [viewer.sync] if viewer is not None else []

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from wbtc.runtime import commands
-from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, find_controller
+from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, Substitutions, find_controller
 from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
 
@@ -45,6 +45,7 @@ class RunOptions:
     trace: Callable[[Simulation], None] | None = None
     on_step: Callable[[Simulation], bool] | None = None  # returns False to stop (viewer closed)
     progress: bool = False
+    stop_reason: Callable[[], str] = lambda: "viewer closed"  # the end reason when on_step stops the run
 
 
 @dataclass
@@ -95,7 +96,11 @@ def start_link(sim: Simulation, robot: RobotState, world: Path, hub: SupervisorH
     project = str(world.resolve().parent.parent)
     name = robot.entry.controller
     link = Link(robot, None)
-    if name == "<extern>":
+    subs: Substitutions = sim.substitutions or Substitutions()
+    args = subs.args.get(robot.entry.name, robot.entry.controller_args)
+    if robot.entry.name in subs.scripts:
+        link.process = ControllerProcess.start(robot.entry.name, subs.scripts[robot.entry.name], args, subs.output)
+    elif name == "<extern>":
         link.process = ControllerProcess.extern(robot.entry.name)
     elif name not in NO_CONTROLLER:
         script = find_controller(world, name)
@@ -104,8 +109,9 @@ def start_link(sim: Simulation, robot: RobotState, world: Path, hub: SupervisorH
                   f"controllers/{name}/{name}.py and {name}.py near the world); the robot stays idle.",
                   file=sys.stderr)
         else:
-            link.process = ControllerProcess.start(robot.entry.name, script, robot.entry.controller_args)
+            link.process = ControllerProcess.start(robot.entry.name, script, args, subs.output)
     if link.process is not None:
+        subs.started.append(link.process)
         link.status = "running"
         link.process.send(commands.init_message(sim, robot, str(world.resolve()), project))
         _receive(sim, link, hub)
@@ -222,7 +228,7 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
                 options.trace(sim)
             if options.on_step and not options.on_step(sim):
                 limit_ms = sim.time_ms
-                reason = "viewer closed"
+                reason = options.stop_reason()
             pace.wait(sim.time)
             if options.progress and time.perf_counter() - last_progress > 0.2:
                 last_progress = time.perf_counter()

@@ -75,6 +75,7 @@ class Simulation:
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
+        self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
         self.packets: list[tuple[Emitter, bytes, int]] = []  # (emitter, data, its channel at send())
         self._renderers: dict[tuple[int, int, bool, bool], Offscreen] = {}
