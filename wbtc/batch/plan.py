@@ -34,6 +34,7 @@ import inspect
 import itertools
 import json
 import math
+import re
 import tomllib
 from collections.abc import Callable
 from pathlib import Path
@@ -156,7 +157,8 @@ def read_plan(path: Path) -> Plan:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        line, col = getattr(exc, "lineno", 1), getattr(exc, "colno", 1)
+        found = re.search(r"at line (\d+), column (\d+)", str(exc))
+        line, col = (int(found[1]), int(found[2])) if found else (1, 1)
         raise WbtcError(f"the plan is not valid TOML: {str(exc).split(' (at')[0]}",
                         Span(str(path), line, col)) from None
     lines = _Lines(path, text)
@@ -218,7 +220,10 @@ def _range(value: dict[str, Any], lines: _Lines, table: str, key: str) -> list[f
         start, stop = value["start"], value["stop"]
         if "num" in value:
             num = int(value["num"])
-            return [start + (stop - start) * i / max(num - 1, 1) for i in range(num)]
+            items = [start + (stop - start) * i / max(num - 1, 1) for i in range(num)]
+            if all(isinstance(v, int) for v in (start, stop)) and all(float(v).is_integer() for v in items):
+                items = [int(v) for v in items]  # {start = 8, stop = 16, num = 3}: 8, 12, 16
+            return items
         step = value.get("step", 1)
         count = math.ceil((stop - start) / step - 1e-9)
         items = [start + step * i for i in range(max(count, 0))]

@@ -143,7 +143,8 @@ def _row(job: Job, outcome: Outcome, grader: _Grader) -> dict[str, Any]:
                                          sim_time=0.0, wall_time=0.0, realtime_factor=0.0, seed=job.seed, robots=[])
     score, message = grader(result)
     row: dict[str, Any] = {"run": job.index, **job.params, "status": outcome.status, "score": score,
-                           "message": message or ("" if outcome.status == "done" else outcome.message),
+                           "message": "; ".join(m for m in (outcome.message if outcome.status != "done" else "",
+                                                            message) if m),
                            "end_reason": result.end_reason, "sim_time": round(result.sim_time, 6),
                            "wall_time": round(result.wall_time, 4), "quit_status": result.quit_status,
                            "attempts": outcome.attempts}

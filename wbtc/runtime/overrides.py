@@ -1,7 +1,8 @@
 """Field overrides of a run (`wbtc.run(fields=...)`, a batch plan's `[fields]`): world edits before compiling.
 
 A key names a node and one of its fields: `DEF_NAME.field` (a DEF path `A.B.field` looks for B below
-A, as `getFromDef` does), else a robot's `name` (`e-puck.translation`), else the type of a top-level
+A, as `getFromDef` does), else a Solid's `name` (`e-puck.translation`, `box 1.size`; robots first),
+else the type of a top-level
 node (`WorldInfo.basicTimeStep`). The value is plain Python: a number, a bool, a string, a list of
 numbers for a vector, colour or rotation, a list of those for an MF field. A PROTO instance's
 interface fields are set on the instance and the PROTO is expanded anew, as a supervisor's write
@@ -50,9 +51,9 @@ def find_field(tree: SceneTree, key: str) -> tuple[Node, FieldRef]:
     if "." not in key:
         raise WbtcError(f"'{key}' names no field: write NODE.FIELD, e.g. 'ROBOT.translation'")
     path, name = key.rsplit(".", 1)
-    node = tree.from_def(path) or _by_robot_name(tree.scene, path) or _by_type(tree.scene, path)
+    node = tree.from_def(path) or _by_name(tree.scene, path) or _by_type(tree.scene, path)
     if node is None:
-        raise WbtcError(f"'{key}': no node with DEF name, robot name or top-level type '{path}' in the world")
+        raise WbtcError(f"'{key}': no node with DEF name, Solid name or top-level type '{path}' in the world")
     for level in (1, 0) if node.proto is not None else (0,):
         ref = tree.field(node, name, level)
         if ref is not None:
@@ -110,11 +111,10 @@ def _expected(elem: str, field_type: str) -> str:
     return f" (expected a list of items of {one})" if field_type.startswith("MF") else f" (expected {one})"
 
 
-def _by_robot_name(scene: Scene, name: str) -> Node | None:
-    for node in scene.walk():
-        if node.is_a("Robot") and str(node.get("name")) == name:
-            return node
-    return None
+def _by_name(scene: Scene, name: str) -> Node | None:
+    """The first robot, else the first Solid, whose `name` is `name`."""
+    solids = [node for node in scene.walk() if node.is_a("Solid") and str(node.get("name")) == name]
+    return next((node for node in solids if node.is_a("Robot")), solids[0] if solids else None)
 
 
 def _by_type(scene: Scene, type_name: str) -> Node | None:
