@@ -240,7 +240,16 @@ def tune_servos(spec: mujoco.MjSpec, model: mujoco.MjModel) -> None:
     overshoots its target many times over, and those forces throw the robot: a spinning e-puck
     sprang back 0.8 rad and hopped 7 mm when its wheels reversed.) The integrator is then plain
     Euler (world.setup_world); the runtime keeps armature = gain × timestep as it lowers the gain.
+
+    MuJoCo 4 keeps the mass matrix of "simple" bodies (a body on the world by slide and hinge
+    joints along its own axes) as constants computed at compile time, so an armature written into
+    the model later was silently ignored there: a motor on a fixed base (a robot without Physics,
+    an arm, a slider) ran its full servo gain against its bare inertia and blew up. Every body is
+    made general, so that the mass matrix is built from the armature as it is now.
     """
+    if model.nu:
+        model.body_simple[:] = 0
+        model.dof_simplenum[:] = 0
     for i in range(model.nu):
         joint = model.actuator_trnid[i, 0]
         inertia = 1.0 / max(float(model.dof_invweight0[model.jnt_dofadr[joint]]), 1e-12)

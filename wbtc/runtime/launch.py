@@ -1,9 +1,11 @@
 """`wbtc run` end to end: compile, simulate with or without the viewer, report.
 
-With a display and without `--headless`, MuJoCo's interactive viewer shows the run in real time
-and keys typed there reach the robots' Keyboard devices. Headless, a progress bar shows on a
-terminal and a summary (or `--json`) ends the run. `--record FILE` films the Viewpoint (`record`), or
-writes an animation page for a FILE.html (`animation`).
+With a display and without `--headless`, wbtc's window (`window`) shows the run from the world's
+Viewpoint in real time, with Webots' simulation keys (pause, step, fast, reset, follow), until the
+window is closed or `--duration` has passed; other keys reach the robots' Keyboard devices.
+Headless, a progress bar shows on a terminal and a summary (or `--json`) ends the run.
+`--record FILE` films the Viewpoint (`record`), or writes an animation page for a FILE.html
+(`animation`).
 """
 
 from __future__ import annotations
@@ -28,7 +30,7 @@ from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
 from wbtc.runtime.supervisor import SupervisorHub
-from wbtc.runtime.viewer import open_viewer
+from wbtc.scene.model import Scene
 
 
 @dataclass
@@ -39,6 +41,8 @@ class Prepared:
     hub: SupervisorHub | None
     warnings: list[Diagnostic]
     unhonoured: list[Diagnostic]
+    scene: Scene
+    options: CompileOptions
 
 
 def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, noise: bool = True,
@@ -58,7 +62,7 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
     if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
         sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
-    return Prepared(sim, hub, warnings, unhonoured)
+    return Prepared(sim, hub, warnings, unhonoured, scene, compile_options)
 
 
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
@@ -73,15 +77,20 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
         print(f"wbtc: {len(prepared.unhonoured)} Webots fields of this world are not honoured yet "
               f"(`wbtc compile` lists them)", file=sys.stderr)
     recorder = _recorder(sim, record)
-    viewer = None if headless or not _has_display() else open_viewer(sim)
-    hooks = [viewer.sync] if viewer is not None else []
+    window = None
+    if not headless and _has_display():
+        if hub is None:  # the window's reset key needs what a supervisor's simulationReset uses
+            hub = SupervisorHub(sim, prepared.scene, world, prepared.options)
+        window = open_window(sim, world, lambda: hub.queue(None, "worldReload", ()))
+    hooks = [window.sync] if window is not None else []
     hooks += [recorder] if recorder is not None else []
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
     try:
-        options = RunOptions(duration=duration, realtime=realtime or viewer is not None, keys=key_script,
+        # The window paces the run itself (its fast mode turns pacing off) and runs until it is closed.
+        options = RunOptions(duration=duration, realtime=realtime and window is None, keys=key_script,
                              trace=TraceWriter(trace_file) if trace_file else None,
-                             on_step=_chain(hooks) if hooks else None,
-                             progress=viewer is None and sys.stderr.isatty() and not json_output)
+                             on_step=_chain(hooks) if hooks else None, until_stopped=window is not None,
+                             progress=window is None and sys.stderr.isatty() and not json_output)
         outcome = run(sim, world, options, hub)
         if hub is not None:
             hub.close_recordings()  # a movie or an animation never stopped ends with the run
@@ -93,8 +102,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
             recorder.abort()
         if trace_file:
             trace_file.close()
-        if viewer is not None:
-            viewer.close()
+        if window is not None:
+            window.close()
         sim.close()
     if json_output:
         print(json.dumps(outcome.to_json()))
@@ -102,6 +111,17 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
         print(summary(outcome))
     # simulationQuit(status) makes `wbtc run` exit with that status, as Webots does.
     return outcome.quit_status if outcome.quit_status is not None else 0
+
+
+def open_window(sim: Simulation, world: Path, on_reset: Callable[[], None]) -> Any:
+    """The viewer window, or None (with a note) when this display cannot show one."""
+    try:
+        from wbtc.runtime.window import Window
+
+        return Window(sim, world, on_reset)
+    except Exception as exc:  # noqa: BLE001 (no usable GL on this display: run headless instead)
+        print(f"wbtc: the window cannot open ({exc}); running headless", file=sys.stderr)
+        return None
 
 
 def _recorder(sim: Simulation, path: Path | None) -> Recorder | PageRecorder | None:
@@ -131,7 +151,7 @@ def _has_display() -> bool:
         return False
     if _display_answers():
         return True
-    # MuJoCo's viewer would end the process on this display (GLFW fails in its C code, out of
+    # GLFW would end the process on this display (GLFW fails in its C code, out of
     # Python's reach): run headless, and let cameras render with headless OpenGL too.
     print(f"wbtc: the display {named!r} does not answer; running headless", file=sys.stderr)
     if not os.environ.get("MUJOCO_GL"):
@@ -143,12 +163,12 @@ def _has_display() -> bool:
 
 
 def _display_answers() -> bool:
-    """Whether GLFW (what MuJoCo's viewer opens its window with) can start on this display."""
+    """Whether GLFW (what the window opens with) can start on this display."""
     import warnings
 
     try:
         import glfw
-    except ImportError:  # no GLFW binding: let MuJoCo's viewer try
+    except ImportError:  # no GLFW binding: let the window try
         return True
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # the binding warns about the failure it then reports

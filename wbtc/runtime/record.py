@@ -24,12 +24,13 @@ import contextlib
 import math
 import os
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
-from PIL import Image, ImageDraw, ImageFont
+from PIL import Image
 
 from wbtc.errors import WbtcError
+from wbtc.runtime.labels import LabelPainter
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -55,8 +56,8 @@ class Recorder:
         self.temp = path.with_name(f".{path.stem}.{os.getpid()}.part{suffix}")
         self.frames = 0
         self.writer = _open_writer(self.temp, suffix, self.width, self.height, self.fps, path)
-        self.follow = _Follow(sim)
-        self._fonts: dict[int, Any] = {}
+        self.follow = Follow(sim)
+        self.labels = LabelPainter()
         self.record(sim)
 
     def __call__(self, sim: Simulation) -> bool:
@@ -84,7 +85,7 @@ class Recorder:
         renderer = sim.renderer(self.width, self.height, antialias=True)
         rgb = np.ascontiguousarray(renderer.draw(sim.data, camera, pose=pose)[::-1])
         labels = getattr(sim, "labels", None)
-        return self._labels(rgb, labels) if labels else rgb
+        return self.labels.draw(rgb, labels) if labels else rgb
 
     def close(self) -> None:
         """Finish the file and move it to its name."""
@@ -102,26 +103,8 @@ class Recorder:
         with contextlib.suppress(OSError):
             self.temp.unlink()
 
-    def _labels(self, rgb: np.ndarray, labels: dict[int, tuple]) -> np.ndarray:
-        """Draw Supervisor labels (Webots' setLabel) over the frame, in id order."""
-        base = Image.fromarray(rgb).convert("RGBA")
-        overlay = Image.new("RGBA", base.size, (0, 0, 0, 0))
-        draw = ImageDraw.Draw(overlay)
-        for _, label in sorted(labels.items()):
-            text, x, y, size, color, transparency = label[:6]
-            if not text:
-                continue
-            pixels = max(1, round(float(size) * self.height))
-            font = self._fonts.get(pixels)
-            if font is None:
-                font = self._fonts[pixels] = ImageFont.load_default(size=pixels)
-            alpha = round(255 * (1.0 - min(max(float(transparency), 0.0), 1.0)))
-            fill = ((int(color) >> 16) & 255, (int(color) >> 8) & 255, int(color) & 255, alpha)
-            draw.multiline_text((float(x) * self.width, float(y) * self.height), str(text), font=font, fill=fill)
-        return np.asarray(Image.alpha_composite(base, overlay).convert("RGB"))
 
-
-class _Follow:
+class Follow:
     """Where the viewpoint is for each frame: fixed, or following a body as Webots' follow modes do."""
 
     def __init__(self, sim: Simulation) -> None:
@@ -129,7 +112,7 @@ class _Follow:
         self.target = str(fields.get("follow") or "")
         self.kind = str(fields.get("followType") or "Tracking Shot")
         self.start: tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray] | None = None
-        camera = _viewpoint(sim)
+        camera = viewpoint_camera(sim)
         body = self._body(sim)
         if camera >= 0 and body >= 0 and self.kind != "None":
             self.start = (sim.data.xpos[body].copy(), sim.data.xmat[body].reshape(3, 3).copy(),
@@ -137,7 +120,7 @@ class _Follow:
 
     def view(self, sim: Simulation) -> tuple[int, tuple[np.ndarray, np.ndarray] | None]:
         """The model camera to draw and the pose to give it (None: its own)."""
-        camera = _viewpoint(sim)
+        camera = viewpoint_camera(sim)
         body = self._body(sim) if self.start is not None else -1
         if camera < 0 or body < 0:
             return camera, None
@@ -166,7 +149,8 @@ class _Follow:
         return -1
 
 
-def _viewpoint(sim: Simulation) -> int:
+def viewpoint_camera(sim: Simulation) -> int:
+    """The model camera standing for the world's Viewpoint (-1: the world has none)."""
     try:
         return sim.model.camera("viewpoint").id
     except KeyError:

@@ -43,9 +43,10 @@ class RunOptions:
     realtime: bool = False
     keys: list[tuple[float, int]] = field(default_factory=list)
     trace: Callable[[Simulation], None] | None = None
-    on_step: Callable[[Simulation], bool] | None = None  # returns False to stop (viewer closed)
+    on_step: Callable[[Simulation], bool] | None = None  # returns False to stop (the window was closed)
     progress: bool = False
-    stop_reason: Callable[[], str] = lambda: "viewer closed"  # the end reason when on_step stops the run
+    stop_reason: Callable[[], str] = lambda: "window closed"  # the end reason when on_step stops the run
+    until_stopped: bool = False  # without a duration: run until on_step stops it (a window is closed)
 
 
 @dataclass
@@ -198,8 +199,11 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
         hub.mode = MODE_REAL_TIME if options.realtime else MODE_FAST
     links = [start_link(sim, robot, world, hub) for robot in sim.robots]
     limit_ms = (options.duration if options.duration is not None else DEFAULT_LIMIT_S) * 1000.0
+    if options.duration is None and options.until_stopped:
+        limit_ms = math.inf
     keys = sorted(options.keys)
     reason = "duration" if options.duration is not None else "time limit (60 s)"
+    rest_ends = options.duration is None and not options.until_stopped  # at rest, a headless run is over
     last_progress = 0.0
     while sim.time_ms + 1e-9 < limit_ms:
         if hub is not None:
@@ -213,7 +217,7 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
                 break
             pace.set(hub.mode == MODE_REAL_TIME, sim.time, restart=bool(shift))
         active = [link for link in links if link.status == "running"]
-        if options.duration is None and not active and _at_rest(sim):
+        if rest_ends and not active and _at_rest(sim):
             reason = "all controllers ended and the world is at rest"
             break
         due = min([link.wake_ms for link in active], default=math.inf)
@@ -233,7 +237,7 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             if options.progress and time.perf_counter() - last_progress > 0.2:
                 last_progress = time.perf_counter()
                 _progress(sim.time, limit_ms / 1000.0)
-            if options.duration is None and not active and _at_rest(sim):
+            if rest_ends and not active and _at_rest(sim):
                 break
         if sim.time_ms + 1e-9 >= limit_ms:
             break
