@@ -38,7 +38,6 @@ import numpy as np
 
 from wbtc.compile.context import VISUAL_GROUP
 from wbtc.compile.table import DeviceEntry
-from wbtc.runtime.lookup import quantize
 from wbtc.runtime.sensors import Sensor
 
 if TYPE_CHECKING:
@@ -47,6 +46,8 @@ if TYPE_CHECKING:
 #: How many times a ray is continued past clipped surfaces and back faces before giving up.
 _MAX_CONTINUES = 16
 _EPS = 1e-6
+#: A geom group the lidar's rays do not see: a shape a ray goes through is put there for one batch.
+_HIDDEN_GROUP = 5
 
 
 class Lidar(Sensor):
@@ -74,6 +75,7 @@ class Lidar(Sensor):
         self.last_ms = 0.0
         self.groups = np.zeros(6, dtype=np.uint8)
         self.groups[VISUAL_GROUP] = 1
+        self._inside: tuple[mujoco.MjModel | None, list[int]] = (None, [])  # see _cast
         self.rays, self.depth_axis, self.angles = self._layout()
         count = self.layers * self.width
         self.ranges = np.zeros(count) if self.rotating else np.full(count, math.inf)
@@ -172,37 +174,83 @@ class Lidar(Sensor):
             finite = np.isfinite(ranges)
             ranges[finite] += sim.noise_rng.normal(0.0, self.noise * self.max_range, int(finite.sum()))
         if self.resolution > 0:
-            ranges = np.array([quantize(float(r), self.resolution) for r in ranges])
+            finite = np.isfinite(ranges)  # np.round rounds halves to even, as Python's round (lookup.quantize)
+            ranges[finite] = np.round(ranges[finite] / self.resolution) * self.resolution
         return ranges
 
     def _cast(self, sim: Simulation, origin: np.ndarray, dirs: np.ndarray, limit: np.ndarray) -> np.ndarray:
-        """Distance along each unit ray to the first visible front face beyond `near` (inf: none within `limit`)."""
+        """Distance along each unit ray to the first visible front face beyond `near` (inf: none within `limit`).
+
+        A hit the lidar cannot see is a back face (the ray starts inside a shape, or meets a plane from
+        behind) or a surface clipped by `near`: the ray goes on through that shape. Such rays are cast
+        again in batches, one per set of shapes they went through, with those shapes hidden. A primitive
+        is convex, so a ray never re-enters it and hiding it is exact; a mesh may be concave, so its rays
+        go on one by one instead. A primitive that holds the origin (a lidar's own housing) hides every
+        ray: once met from behind it is hidden from the start, for as long as it still holds the origin.
+        """
         model, data = sim.model, sim.data
         count = len(dirs)
-        geom = np.empty(count, dtype=np.int32)
-        dist = np.empty(count)
-        normal = np.empty(3 * count)
         start = np.array(origin, dtype=float)
-        mujoco.mj_multiRay(model, data, start, np.ascontiguousarray(dirs).ravel(), self.groups, 1, -1, geom, dist,
-                           normal, count, float(limit.max()) + 1.0)
-        facing = np.einsum("ij,ij->i", normal.reshape(count, 3), dirs)
-        # Rays that start inside a shape meet its back face first: cast them again, in one batch per
-        # body, without that body (the lidar does not see the rest of a body it sits inside).
-        inside = (geom >= 0) & (facing > 0)
-        for body in np.unique(model.geom_bodyid[geom[inside]]):
-            rays = np.flatnonzero(inside & (model.geom_bodyid[np.maximum(geom, 0)] == body))
-            n = len(rays)
-            sub_geom, sub_dist, sub_normal = np.empty(n, dtype=np.int32), np.empty(n), np.empty(3 * n)
-            mujoco.mj_multiRay(model, data, start, np.ascontiguousarray(dirs[rays]).ravel(), self.groups, 1,
-                               int(body), sub_geom, sub_dist, sub_normal, n, float(limit.max()) + 1.0)
-            geom[rays], dist[rays] = sub_geom, sub_dist
-            facing[rays] = np.einsum("ij,ij->i", sub_normal.reshape(n, 3), dirs[rays])
-        dist[geom < 0] = math.inf
-        # Rays that still meet a back face or a surface clipped by `near` go on, one by one.
-        for k in np.flatnonzero((geom >= 0) & ((facing > 0) | (dist < self.near))):
-            dist[k] = self._continue(sim, start, dirs[k], float(dist[k]), float(limit[k]))
+        cutoff = float(limit.max()) + 1.0
+        if self._inside[0] is not model:
+            self._inside = (model, [])
+        inside = [g for g in self._inside[1] if _holds(model, data, g, start)]
+        self._inside = (model, inside)
+        geom, dist, facing = self._hidden_cast(model, data, start, dirs, cutoff, inside)
+        types = model.geom_type
+        key = np.zeros(count, dtype=np.int64)  # which set of shapes each ray went through (0: none)
+        sets: dict[tuple[int, int], int] = {}
+        members: list[list[int]] = [list(inside)]
+        final = np.zeros(count, dtype=bool)  # rays continued one by one: their distance is the answer
+        for _ in range(_MAX_CONTINUES):
+            unseen = np.flatnonzero(~final & (geom >= 0) & ((facing > 0) | (dist < self.near)))
+            if not len(unseen):
+                break
+            mesh = types[geom[unseen]] == mujoco.mjtGeom.mjGEOM_MESH
+            for k in unseen[mesh].tolist():
+                dist[k] = self._continue(sim, start, dirs[k], float(dist[k]), float(limit[k]))
+                final[k] = True
+            unseen = unseen[~mesh]
+            pairs, which = np.unique(key[unseen] * model.ngeom + geom[unseen], return_inverse=True)
+            for index, pair in enumerate(pairs.tolist()):
+                previous, shape = divmod(pair, model.ngeom)
+                rays = unseen[which == index]
+                if facing[rays[0]] > 0 and shape not in inside:
+                    # A convex shape met from behind first holds the origin (a plane: the origin is behind
+                    # it): hide it from the start at the next scans, while it still does.
+                    inside.append(shape)
+                number = sets.setdefault((previous, shape), len(members))
+                if number == len(members):
+                    members.append(members[previous] + [shape])
+                key[rays] = number
+                geom[rays], dist[rays], facing[rays] = self._hidden_cast(model, data, start, dirs[rays], cutoff,
+                                                                         members[number])
+        else:
+            dist[~final & (geom >= 0) & ((facing > 0) | (dist < self.near))] = math.inf
+        dist[~final & (geom < 0)] = math.inf
         dist[dist > limit] = math.inf
         return dist
+
+    def _hidden_cast(self, model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray, dirs: np.ndarray,
+                     cutoff: float, hidden: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`_multi_ray` with the geoms `hidden` put out of the rays' sight for the cast."""
+        if not hidden:
+            return self._multi_ray(model, data, start, dirs, cutoff)
+        saved = model.geom_group[hidden].copy()
+        model.geom_group[hidden] = _HIDDEN_GROUP
+        try:
+            return self._multi_ray(model, data, start, dirs, cutoff)
+        finally:
+            model.geom_group[hidden] = saved
+
+    def _multi_ray(self, model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray, dirs: np.ndarray,
+                   cutoff: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """One mj_multiRay batch from `start`: the geom hit by each ray (-1), its distance, normal · direction."""
+        n = len(dirs)
+        geom, dist, normal = np.empty(n, dtype=np.int32), np.empty(n), np.empty(3 * n)
+        mujoco.mj_multiRay(model, data, start, np.ascontiguousarray(dirs).ravel(), self.groups, 1, -1, geom, dist,
+                           normal, n, cutoff)
+        return geom, dist, np.einsum("ij,ij->i", normal.reshape(n, 3), dirs)
 
     def _continue(self, sim: Simulation, origin: np.ndarray, direction: np.ndarray, travelled: float,
                   limit: float) -> float:
@@ -231,3 +279,25 @@ class Lidar(Sensor):
         layers = np.repeat(np.arange(self.layers), self.width)
         return [(float(x), float(y), float(z), int(layer), float(t))
                 for (x, y, z), layer, t in zip(xyz.tolist(), layers.tolist(), self.times.tolist(), strict=True)]
+
+
+def _holds(model: mujoco.MjModel, data: mujoco.MjData, geom: int, point: np.ndarray) -> bool:
+    """Whether the primitive `geom` holds `point` (a plane: `point` is behind it)."""
+    local = data.geom_xmat[geom].reshape(3, 3).T @ (point - data.geom_xpos[geom])
+    x, y, z = (float(v) for v in local)
+    size = model.geom_size[geom]
+    kind = int(model.geom_type[geom])
+    if kind == mujoco.mjtGeom.mjGEOM_PLANE:
+        return z < 0.0
+    if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
+        return x * x + y * y + z * z < size[0] ** 2
+    if kind == mujoco.mjtGeom.mjGEOM_CAPSULE:  # size: radius, half length along z
+        axial = max(abs(z) - size[1], 0.0)
+        return x * x + y * y + axial * axial < size[0] ** 2
+    if kind == mujoco.mjtGeom.mjGEOM_ELLIPSOID:
+        return (x / size[0]) ** 2 + (y / size[1]) ** 2 + (z / size[2]) ** 2 < 1.0
+    if kind == mujoco.mjtGeom.mjGEOM_CYLINDER:  # size: radius, half height
+        return x * x + y * y < size[0] ** 2 and abs(z) < size[1]
+    if kind == mujoco.mjtGeom.mjGEOM_BOX:  # size: half extents
+        return abs(x) < size[0] and abs(y) < size[1] and abs(z) < size[2]
+    return False

@@ -83,8 +83,11 @@ class RayCaster:
         MuJoCo's ray misses a mesh exactly on the edge between two of its triangles (a ground sensor
         right above a floor's grid line), where Webots' ray hits.
         """
-        side = np.cross(direction, (1.0, 0.0, 0.0) if abs(direction[0]) < 0.9 else (0.0, 1.0, 0.0))
-        side *= 1e-7 / np.linalg.norm(side)
+        # direction × x̂ (or × ŷ when the ray runs along x), written out: np.cross costs ~70 µs a call.
+        dx, dy, dz = float(direction[0]), float(direction[1]), float(direction[2])
+        sx, sy, sz = (0.0, dz, -dy) if abs(dx) < 0.9 else (-dz, 0.0, dx)
+        scale = 1e-7 / math.sqrt(sx * sx + sy * sy + sz * sz)
+        side = np.array((sx * scale, sy * scale, sz * scale))
         model, data = self.model, self.data
         return mujoco.mj_ray(model, data, point + side, direction, groups, 1, exclude, self._geom, self.normal)
 

@@ -150,7 +150,20 @@ class _BuiltinsOnly(pickle.Unpickler):
         raise pickle.UnpicklingError(f"wbtc wire: refusing to load {module}.{name}; frames hold builtins only")
 
 
-_STACK_GLOBAL = b"\x93"  # the opcode that names a class (protocol 4): what the other end refuses
+class _NotPlain(Exception):
+    """Raised while pickling an object that is not an exact builtin."""
+
+
+class _PlainPickler(pickle.Pickler):
+    """A pickler that stops at the first object that is not an exact builtin.
+
+    The C pickler calls `reducer_override` for every object except None, booleans and exact ints, floats,
+    bytes, strings, dicts, sets, lists and tuples: plain data pickles at full speed, anything else (a numpy
+    number, an IntEnum member, a class) stops it, and `encode` makes the message plain first.
+    """
+
+    def reducer_override(self, obj: Any) -> Any:
+        raise _NotPlain
 
 
 def encode(obj: Any) -> bytes:
@@ -162,12 +175,11 @@ def encode(obj: Any) -> bytes:
     Raises:
         TypeError: something in the message is not plain data and cannot be made so.
     """
+    buffer = io.BytesIO()
     try:
-        payload = pickle.dumps(obj, protocol=PROTOCOL)
-        clean = _STACK_GLOBAL not in payload  # else maybe a class inside (or just that byte in some data)
-    except (pickle.PicklingError, AttributeError, TypeError):  # e.g. an instance of a local class
-        clean = False
-    if not clean:
+        _PlainPickler(buffer, protocol=PROTOCOL).dump(obj)
+        payload = buffer.getvalue()
+    except (_NotPlain, pickle.PicklingError, AttributeError, TypeError):
         try:
             payload = pickle.dumps(plain(obj), protocol=PROTOCOL)  # builtins only now: nothing to refuse
         except (pickle.PicklingError, AttributeError, TypeError) as exc:
