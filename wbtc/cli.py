@@ -6,6 +6,7 @@ exit code 1; the user never sees a traceback for a mistake in a world file.
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -155,9 +156,30 @@ def _missing(path: Path) -> None:
     raise WbtcError(f"no such world file: {path}")
 
 
+#: Commands whose process may end without the interpreter's teardown (see `main`).
+_QUICK_EXIT = {"run", "compile", "check"}
+
+
 def main() -> None:
-    """Entry point of the `wbtc` console script."""
-    app()
+    """Entry point of the `wbtc` console script.
+
+    Once `run`, `compile` or `check` is done (files closed, output flushed, controllers stopped), the
+    process ends at once: the interpreter's own teardown (freeing numpy, MuJoCo and lark objects
+    module by module) would add about 60 ms to every `wbtc run`. `batch` ends normally: a Ray
+    client shuts its connection down at exit.
+    """
+    try:
+        app()
+    except SystemExit as exc:
+        if len(sys.argv) < 2 or sys.argv[1] not in _QUICK_EXIT:
+            raise
+        code = exc.code
+        if isinstance(code, str):
+            print(code, file=sys.stderr)
+            code = 1
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(int(code or 0))
 
 
 if __name__ == "__main__":

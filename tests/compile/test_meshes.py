@@ -10,7 +10,8 @@ import pytest
 from wbtc.compile.faceset import indexed_face_set
 from wbtc.compile.heightfield import HeightField, elevation_grid
 from wbtc.compile.mesh_data import MeshData
-from wbtc.compile.meshes import clear_mesh_cache, mesh_file, mesh_volume_and_inertia
+from wbtc.compile.mesh_mass import mesh_volume_and_inertia
+from wbtc.compile.meshes import clear_mesh_cache, mesh_file
 from wbtc.scene import build_scene
 from wbtc.vrml import parse_text
 

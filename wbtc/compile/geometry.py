@@ -20,6 +20,7 @@ import numpy as np
 from wbtc.compile import faceset, heightfield, meshes
 from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import LEGACY_PRIMITIVE_QUAT, Frame, quat_mul, quat_to_mat
+from wbtc.compile.mesh_mass import mesh_volume_and_inertia
 from wbtc.scene.model import Node
 
 GEOMETRY_TYPES = frozenset({"Box", "Sphere", "Cylinder", "Capsule", "Cone", "Plane", "IndexedFaceSet", "Mesh",
@@ -193,7 +194,7 @@ def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool) -> Geom
     if textured and data.texcoords is not None:
         mesh.usertexcoord = np.asarray(data.mujoco_texcoords()).ravel().tolist()  # MuJoCo's v runs down
     mesh.info = info(node)
-    volume, com, inertia = meshes.mesh_volume_and_inertia(data)
+    volume, com, inertia = mesh_volume_and_inertia(data)
     if volume <= 1e-12:
         # Flat meshes (a floor drawn as faces) have no volume; MuJoCo needs a shell inertia for them.
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL

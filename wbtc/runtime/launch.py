@@ -16,21 +16,23 @@ import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
 from wbtc.pipeline import load_world
-from wbtc.runtime.animation import PageRecorder
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.overrides import apply_overrides
-from wbtc.runtime.record import Recorder
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
 from wbtc.runtime.supervisor import SupervisorHub
 from wbtc.scene.model import Scene
+
+if TYPE_CHECKING:
+    from wbtc.runtime.animation import PageRecorder
+    from wbtc.runtime.record import Recorder
 
 
 @dataclass
@@ -128,6 +130,10 @@ def _recorder(sim: Simulation, path: Path | None) -> Recorder | PageRecorder | N
     """The `--record` hook: a video (.mp4, .gif) or an animation page (.html)."""
     if path is None:
         return None
+    # Imported here: recording needs Pillow and PyAV, which a plain run need not load (25 ms of start-up).
+    from wbtc.runtime.animation import PageRecorder
+    from wbtc.runtime.record import Recorder
+
     try:
         return PageRecorder(sim, path) if path.suffix.lower() == ".html" else Recorder(sim, path)
     except BaseException:
