@@ -7,12 +7,14 @@ endPoint's pose is kept and `ref = position`: MuJoCo then reports the same joint
 PositionSensor does, relative to the zero found by undoing `position` about the axis.
 
 Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `suspensionAxis`,
-`stopERP`, `stopCFM`; BallJoint motors (`device2`/`device3`, and `device` on a ball joint);
-SolidReference endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
+`stopERP`, `stopCFM`; a BallJoint's spring and damping per axis (a ball joint with devices is three
+hinges, each with its own parameters; without devices it is one MuJoCo ball joint with the first
+parameters'); SolidReference endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
 """
 
 from __future__ import annotations
 
+import math
 from typing import TYPE_CHECKING
 
 import mujoco
@@ -104,20 +106,30 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
                                     dtype=float))
     if kind == "SliderJoint":
         anchor = child_pose.pos  # a slider has no anchor: put the joint at the endPoint's origin
-    axes: list[tuple[Node | None, str, str]] = []
-    if kind == "BallJoint":
-        joint = _make(child, node, ctx, mujoco.mjtJoint.mjJNT_BALL, child_pose, anchor, None, first, first_type)
-        if any(node.get(f) for f in ("device", "device2", "device3")):
-            ctx.warn("motors and sensors on a BallJoint are not supported by wbtc yet", node.span)
+    if kind == "BallJoint" and not any(node.get(f) for f in ("device", "device2", "device3")):
+        _make(child, node, ctx, mujoco.mjtJoint.mjJNT_BALL, child_pose, anchor, None, first, first_type)
         return 0
-    axes.append((first, first_type, "device"))
+    axes: list[tuple[Node | None, str, str, np.ndarray]] = []
+    if kind == "BallJoint":
+        # Webots drives a ball joint through an Euler angular motor: the endPoint turns by
+        # q(axis, θ1)·q(axis2, θ2)·q(axis3, θ3), axis2 = axis3 × axis (WbBallJoint). Three hinges
+        # in one MuJoCo body compose their turns in that order, so they are that joint exactly.
+        axis1, axis3 = _ball_axes(node)
+        second = node.get("jointParameters2")
+        third = node.get("jointParameters3")
+        axes += [(first, first_type, "device", axis1), (second, "JointParameters", "device2", np.cross(axis3, axis1)),
+                 (third, "JointParameters", "device3", axis3)]
+    else:
+        axes.append((first, first_type, "device", np.asarray(param(first, first_type, "axis"), dtype=float)))
     if kind == "Hinge2Joint":
-        axes.append((node.get("jointParameters2"), "JointParameters", "device2"))
+        second = node.get("jointParameters2")
+        axes.append((second, "JointParameters", "device2",
+                     np.asarray(param(second, "JointParameters", "axis"), dtype=float)))
     joint_type = mujoco.mjtJoint.mjJNT_SLIDE if kind == "SliderJoint" else mujoco.mjtJoint.mjJNT_HINGE
     start = len(robot.devices) if robot is not None else 0
     first_count = 0
-    for index, (params, params_type, device_field) in enumerate(axes, start=1):
-        axis = frame.rotate(np.asarray(param(params, params_type, "axis"), dtype=float))
+    for index, (params, params_type, device_field, local_axis) in enumerate(axes, start=1):
+        axis = frame.rotate(local_axis)
         joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
         if joint_type == mujoco.mjtJoint.mjJNT_HINGE:
             _round_wheels(child, np.asarray(joint.axis, dtype=float))
@@ -125,6 +137,8 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
         for dev in node.get(device_field) or []:
             if isinstance(dev, Node) and robot is not None:
                 device.add_joint_device(dev, joint, child, robot, ctx, position, index)
+                if kind == "BallJoint" and index == 2:
+                    _limit_middle_motor(robot.devices[-1], dev)
         if index == 1 and robot is not None:
             first_count = len(robot.devices) - start
     return first_count
@@ -172,3 +186,33 @@ def _round_wheels(body: mujoco.MjsBody, axis: np.ndarray) -> None:
             radius, half_height = float(geom.size[0]), float(geom.size[1])
             geom.type = mujoco.mjtGeom.mjGEOM_ELLIPSOID
             geom.size = [radius, radius, half_height]
+
+
+def _ball_axes(node: Node) -> tuple[np.ndarray, np.ndarray]:
+    """A BallJoint's first and third axes, as WbBallJoint derives a missing one from the other."""
+    second, third = node.get("jointParameters2"), node.get("jointParameters3")
+    a = np.asarray(second.get("axis"), dtype=float) if isinstance(second, Node) else None
+    c = np.asarray(third.get("axis"), dtype=float) if isinstance(third, Node) else None
+    if a is None:
+        if c is None:
+            a = np.array([1.0, 0.0, 0.0])
+        else:
+            a = np.cross(c, [0.0, 0.0, 1.0])
+            if not np.any(a):
+                a = np.cross(c, [1.0, 0.0, 0.0])
+    if c is None:
+        c = np.cross(a, [1.0, 0.0, 0.0])
+        if not np.any(c):
+            c = np.cross(a, [0.0, 0.0, 1.0])
+    return a, c
+
+
+def _limit_middle_motor(entry: object, dev: Node) -> None:
+    """The middle axis of a ball joint's Euler motor stays within ±π/2, as Webots limits its motor."""
+    fields = getattr(entry, "fields", None)
+    if dev.base_type != "RotationalMotor" or getattr(entry, "node", None) is not dev or fields is None:
+        return  # not a motor, or one left out (a duplicate name)
+    low, high = float(fields.get("minPosition", 0.0)), float(fields.get("maxPosition", 0.0))
+    if low == high == 0.0:
+        low, high = -math.pi / 2, math.pi / 2
+    fields["minPosition"], fields["maxPosition"] = max(low, -math.pi / 2), min(high, math.pi / 2)
