@@ -77,10 +77,12 @@ def test_simulation_reset_restores_poses_and_time(tmp_path):
     assert [float(v) for v in reset.group(2).split(",")] == pytest.approx([1, 1, 0.05], abs=1e-9)
     assert [float(v) for v in reset.group(3).split(",")][:2] == pytest.approx([-3, -3], abs=2e-3)
     # Time went back to 0 at 1.008 s and --duration counts all simulated time: the clock ends at about
-    # 0.5 s. The driver's controller started over with the reset (the referee did not restart it), so
-    # it drove 0.5 s at 6.28 rad/s on 0.02 m wheels; left running, it would not have set its wheels again.
+    # 0.5 s. A reset from the Supervisor API restarts no controller (Webots' Reset/Reload matrix) and
+    # starts the motors over: the driver, left running, does not set its wheels again, and its wheels,
+    # back to holding their position, keep the robot where the reset put it.
     assert data["sim_time"] == pytest.approx(1.5 - 1.008, abs=0.016)
-    assert data["robots"][0]["position"][0] == pytest.approx(-3 + 6.28 * 0.02 * 0.5, abs=0.01)
+    assert data["robots"][0]["position"][0] == pytest.approx(-3, abs=1e-3)
+    assert data["robots"][0]["status"] == "running"
     # The referee itself went on (started over, it would have moved the box again and printed twice).
     assert output.count("[referee] moved") == 1 and output.count("[referee] reset") == 1
 

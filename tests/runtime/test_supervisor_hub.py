@@ -123,15 +123,21 @@ def test_simulation_reset_restores_the_initial_state(hub):
     box, translation = _field(hub, referee, "BOX", "translation")
     hub.queue(referee, "field.set", (translation["id"], -1, [3.0, 3.0, 0.05]))
     hub.flush()
+    driver_state = next(r for r in sim.robots if r.entry.name == "driver")
+    tag, sensor = next(iter(driver_state.sensors.items()))
+    sensor.enable(16, sim.time_ms)  # as the driver's controller would have
     for _ in range(30):
         sim.step()
     sim.rng.random(5)  # noise drawn during the run
     hub.queue(referee, "simulationReset", ())
     outcome = hub.flush()
     assert outcome.reset
-    # Every other robot's controller starts over; the calling supervisor's goes on.
-    assert [robot.entry.name for robot in outcome.restart] == ["driver"]
+    # No controller starts over (Webots' Reset/Reload matrix): each robot keeps its devices' settings,
+    # their next samples moved back with the clock.
+    assert outcome.restart == [] and outcome.keep_controllers
     assert sim.time_ms == 0.0
+    kept = next(r for r in sim.robots if r.entry.name == "driver").sensors[tag]
+    assert kept is not sensor and kept.period == 16 and kept.next_due == pytest.approx(16.0)
     assert hub.call(referee, "field.get", (translation["id"], -1)) == pytest.approx([1, 1, 0.05], abs=1e-12)
     driver = hub.call(referee, "getFromDef", ("DRIVER", -1))
     assert hub.call(referee, "node.getPosition", (driver["id"],))[:2] == pytest.approx([-3, -3], abs=1e-9)

@@ -31,8 +31,16 @@ _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "av
 _SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due")
 
 
-def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -> None:
-    """Make `sim` run `result`'s model with the state of the old one carried over by name."""
+def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, by_name: bool = False) -> None:
+    """Make `sim` run `result`'s model with the state of the old one carried over by name.
+
+    Args:
+        sim: the simulation.
+        result: the new compile result.
+        keep_time: the clock and the bodies' motion go on (a recompile), else they start over.
+        by_name: robots whose scene node is new (a reloaded world) still get the device state of the
+            old robot of the same name.
+    """
     old_model, old_data, old_robots = sim.model, sim.data, sim.robots
     model = result.model
     data = mujoco.MjData(model)
@@ -50,10 +58,11 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True) -
     sim.surface = SurfaceColours(model)
     mujoco.mj_forward(model, data)
     by_node = {id(robot.entry.node): robot for robot in old_robots}
+    by_robot_name = {robot.entry.name: robot for robot in old_robots} if by_name else {}
     sim.robots = []
     for entry in result.table.robots:
         state = sim._robot(entry)
-        old = by_node.get(id(entry.node))
+        old = by_node.get(id(entry.node)) or by_robot_name.get(entry.name)
         if old is not None:
             carry_devices(old, state, sim, keep_time)
         sim.robots.append(state)
@@ -108,3 +117,14 @@ def _copy_joints(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujo
         data.qpos[qa:qa + nq] = old_data.qpos[qb:qb + nq]
         data.qvel[va:va + nv] = old_data.qvel[vb:vb + nv]
         data.qacc_warmstart[va:va + nv] = old_data.qacc_warmstart[vb:vb + nv]
+
+
+def shift_device_times(sim: Simulation, shift_ms: float) -> None:
+    """Move every device's next sampling time back by `shift_ms` (the clock went back at a reset)."""
+    for robot in sim.robots:
+        robot.keyboard_due -= shift_ms
+        for sensor in robot.sensors.values():
+            sensor.next_due -= shift_ms
+            for name in ("recognition_due", "last_ms"):
+                if hasattr(sensor, name):
+                    setattr(sensor, name, getattr(sensor, name) - shift_ms)

@@ -9,9 +9,9 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   changed is expanded anew), then the running state is carried over (see `rebuild`);
 - `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
   takes a node out; both recompile, and the runner starts or stops the robots' controllers;
-- `simulationReset` reloads the world file (time 0) and starts every other robot's controller over,
-  as Webots' Reset button does (its API call leaves them running); the calling supervisor goes on
-  (started over, it would reset again and again); `worldReload` restarts every controller;
+- `simulationReset` reloads the world file (time 0) and every controller goes on, as Webots' API
+  call does (its Reset button would restart them): each robot keeps its devices' settings (sampling
+  periods, channels) while its motors start over; `worldReload` restarts every controller;
   `simulationQuit(status)` ends the run with that exit code.
 
 `simulationSetMode` is kept here and honoured by the runner; `animationStartRecording` writes a
@@ -39,7 +39,7 @@ from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
 from wbtc.runtime import poses, scene_ops, states, world_file
-from wbtc.runtime.rebuild import swap_model
+from wbtc.runtime.rebuild import shift_device_times, swap_model
 from wbtc.runtime.recordings import RecordingError, Recordings
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, proto_names, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
@@ -60,6 +60,7 @@ class FlushResult:
     reset: bool = False
     restart: list[RobotState] = field(default_factory=list)
     time_shift: float = 0.0  # ms by which a reset moved time back
+    keep_controllers: bool = False  # a reset that leaves every controller running (simulationReset)
 
 
 class SupervisorHub:
@@ -232,7 +233,9 @@ class SupervisorHub:
                 print(f"[{robot.entry.name}] {exc}", file=sys.stderr)
         if outcome.reset:
             outcome.time_shift = self.sim.time_ms
-            self._reload()
+            # A controller that goes on keeps its devices as they were set (sampling periods, channels);
+            # when every controller starts over (worldReload, worldLoad) they start from nothing.
+            self._reload(keep_controllers=outcome.keep_controllers and not outcome.restart)
         elif dirty:
             self._recompile(dirty)
             outcome.rebuilt = True
@@ -252,9 +255,9 @@ class SupervisorHub:
         sim = self.sim
         if op == "simulationQuit":
             self.quit_status = int(args[0])
-        elif op == "simulationReset":  # the other controllers start over; the caller goes on
+        elif op == "simulationReset":  # every controller goes on (Webots' Reset/Reload matrix)
             outcome.reset = True
-            outcome.restart += [other for other in sim.robots if other is not robot]
+            outcome.keep_controllers = True
         elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
             outcome.reset = True
             outcome.restart += list(sim.robots)
@@ -380,8 +383,13 @@ class SupervisorHub:
             raise SupervisorError(f"Error: wb_supervisor_world_load(): cannot load {path}: {exc}") from None
         self.world = path
 
-    def _reload(self) -> None:
-        """`simulationReset`: the world as loaded, at time 0; field handles keep pointing at their nodes."""
+    def _reload(self, keep_controllers: bool = False) -> None:
+        """The world as loaded, at time 0; field handles keep pointing at their nodes.
+
+        Args:
+            keep_controllers: the controllers go on (`simulationReset`): each robot's devices keep
+                what its controller set, its motors only start over, as in Webots.
+        """
         from wbtc.pipeline import load_world
 
         scene, _ = load_world(self.world)
@@ -392,7 +400,10 @@ class SupervisorHub:
             self.tree.fields.append(FieldRef(ref.id, node, ref.name, ref.type, ref.proto))
             self.tree.field_keys[(id(node), ref.name, ref.proto)] = ref.id
         result = compile_scene(scene, self.options)
-        swap_model(self.sim, result, keep_time=False)
+        shift = self.sim.time_ms
+        swap_model(self.sim, result, keep_time=False, by_name=keep_controllers)
+        if keep_controllers:
+            shift_device_times(self.sim, shift)
         self.sim.time_ms = 0.0
         self.sim.labels = {}
         self.sim.reseed()  # Webots resets its random seeds with the simulation
