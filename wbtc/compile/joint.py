@@ -47,6 +47,8 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
     """Add a Joint node: its endPoint as a child body, the MuJoCo joint(s) on it, and its devices."""
     ctx = builder.ctx
     end = node.get("endPoint")
+    while isinstance(end, Node) and end.base_type == "Slot":  # a Slot passes its endPoint on, in the same frame
+        end = end.get("endPoint")
     if isinstance(end, Node) and end.base_type == "SolidReference":
         ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
         return
