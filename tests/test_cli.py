@@ -53,7 +53,10 @@ def test_check_json_report() -> None:
         {"name": "inner", "controller": "<generic>", "devices": [{"name": "gps", "type": "GPS"}]},
     ]
     assert report["protos"][0]["name"] == "Wall" and report["protos"][0]["count"] == 2
-    assert report["warnings"] == []
+    # The fixture ships no controller: `wbtc run` would run the robot without one, and check says so.
+    assert report["warnings"] == [
+        f"{FIXTURES / 'small_robot.wbt'}:11:3: warning: robot 'bot': controller 'drive' not found (looked for "
+        "controllers/drive/drive.py beside the world's folder and in it)"]
 
 
 def test_check_human_report() -> None:

@@ -59,19 +59,25 @@ def _guard(action: Callable[[], T]) -> T:
 def check(
     world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
     json_output: Annotated[bool, typer.Option("--json", help="Print one JSON object.")] = False,
-    strict: Annotated[bool, typer.Option("--strict", help="Unresolved PROTOs are errors.")] = False,
+    strict: Annotated[bool, typer.Option(
+        "--strict", help="Unresolved PROTOs, compile errors and controllers wbtc cannot run are errors.")] = False,
 ) -> None:
     """Say what is in a world (version, axes, robots, devices, PROTOs) and what is wrong with it."""
     from wbtc.check import check_report, format_report
     from wbtc.proto.expand import expand_scene
+    from wbtc.readiness import run_checks
     from wbtc.scene import build_scene
     from wbtc.vrml import parse_file
 
     if not world.is_file():
         _guard(lambda: _missing(world))
     scene, expansion = _guard(lambda: expand_scene(build_scene(parse_file(world)), strict=strict))
+    problems = run_checks(scene, world)
+    if strict and problems:
+        _guard(lambda: _fail_all(problems))
     sources = expansion.sources
     report = check_report(scene, expansion.counts, lambda n: sources[n].label if sources.get(n) else None)
+    report.warnings += [str(p) for p in problems]
     if json_output:
         typer.echo(report.model_dump_json())
         return
@@ -150,6 +156,10 @@ def batch(
 
 def _fail(message: str) -> None:
     raise WbtcError(message)
+
+
+def _fail_all(problems: list[Diagnostic]) -> None:
+    raise WbtcError("", diagnostics=[Diagnostic(p.message, p.span, "error", p.hint) for p in problems])
 
 
 def _missing(path: Path) -> None:

@@ -154,3 +154,34 @@ def test_receiver_queue(sim) -> None:
         "Error: wb_receiver_set_channel() called with channel=3, which is not between allowed channels. "
         "Please use an allowed channel.",
     ]
+
+
+def test_receiver_get_data_follows_the_world_release(sim) -> None:
+    # A world written before R2023b runs controllers of that release: getData() returned the packet's
+    # bytes, which the controller decodes or unpacks itself. From R2023b on it is getString().
+    script = """
+        import struct
+        from controller import Robot
+        robot = Robot()
+        receiver = robot.getDevice("receiver")
+        receiver.enable(32)
+        robot.step()
+        data = receiver.getData()
+        print(type(data).__name__, repr(data))
+        receiver.nextPacket()
+        if isinstance(data, bytes):  # packed doubles are no UTF-8 text: only the old API can read them
+            print(struct.unpack("2d", receiver.getData()))
+        robot.step()
+        """
+    packets = [(b"hi", 1, 0.5, [1.0, 0.0, 0.0]), (struct.pack("2d", 1.5, -2.0), 1, 0.5, [1.0, 0.0, 0.0])]
+    outputs = {}
+    for version in ("R2021c", "V8.5", "R2023b", ""):
+        fake = sim(script, make_init(RADIO, webots_version=version))
+        fake.step(values={1: packets})
+        fake.step()
+        rc, out, err = fake.finish()
+        outputs[version] = (rc, out.splitlines(), "DEPRECATION" in err)
+    assert outputs["R2021c"] == (0, ["bytes b'hi'", "(1.5, -2.0)"], False)
+    assert outputs["V8.5"] == outputs["R2021c"]
+    assert outputs["R2023b"][1][0] == "str 'hi'" and outputs["R2023b"][2]
+    assert outputs[""][1][0] == "str 'hi'"  # a world without a known release: the current API

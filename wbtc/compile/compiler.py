@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 import mujoco
+import numpy as np
 
 from wbtc.compile import damping, device, world
 from wbtc.compile.context import CompileContext, CompileOptions
@@ -82,10 +83,43 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     world.set_ambient(_first(scene, "Background"), ctx)
     if options.strict and ctx.warnings:
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
+    _planes_in_moving_bodies(spec)
     model = _compile(spec)
     device.tune_servos(spec, model)
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)
     return CompileResult(spec, model, ctx.table, ctx.warnings, ctx.texture_paths)
+
+
+#: Half the thickness of the box a Plane in a moving body becomes (metres).
+PLANE_HALF_THICKNESS = 5e-5
+
+
+def _planes_in_moving_bodies(spec: mujoco.MjSpec) -> None:
+    """Make every Plane of a body that can move a thin box of the plane's size.
+
+    MuJoCo allows planes only in static bodies ("plane only allowed in static bodies"), where Webots
+    draws a Plane anywhere (a decal on a robot's shell). The box's top face lies where the plane was,
+    facing the same way, so the drawing does not move; as a collision shape it is finite (Webots'
+    collision plane is infinite), which only matters for a plane that moves and collides.
+    """
+    for geom in spec.geoms:
+        if geom.type != mujoco.mjtGeom.mjGEOM_PLANE or not _moves(geom.parent):
+            continue
+        geom.type = mujoco.mjtGeom.mjGEOM_BOX
+        geom.size = [geom.size[0], geom.size[1], PLANE_HALF_THICKNESS]
+        # Half the thickness down along the plane's normal (its local z): the top face stays at z = 0.
+        rotation = np.zeros(9)
+        mujoco.mju_quat2Mat(rotation, np.asarray(geom.quat, dtype=float))
+        geom.pos = np.asarray(geom.pos, dtype=float) - rotation.reshape(3, 3)[:, 2] * PLANE_HALF_THICKNESS
+
+
+def _moves(body: mujoco.MjsBody | None) -> bool:
+    """Whether `body` or one of its ancestors has a joint (is not welded to the world)."""
+    while body is not None:
+        if len(body.joints):
+            return True
+        body = body.parent if body.name != "world" else None
+    return False
 
 
 def _first(scene: Scene, type_name: str) -> Node | None:

@@ -107,6 +107,7 @@ class DeviceTable:
     Attributes:
         robots: the robots in file order.
         coordinate_system: the world's axes ("ENU" or "NUE"); the model itself is always ENU.
+        webots_version: the world header's Webots version, e.g. "R2021c" (controllers follow its API).
         to_model: rotation taking world-frame vectors into the model's ENU frame.
         basic_time_step: WorldInfo.basicTimeStep in ms.
         substeps: MuJoCo steps per basic time step.
@@ -128,6 +129,7 @@ class DeviceTable:
 
     robots: list[RobotEntry] = field(default_factory=list)
     coordinate_system: str = "ENU"
+    webots_version: str = ""  # the world header's Webots version (controllers follow its API)
     to_model: np.ndarray = field(default_factory=lambda: np.eye(3))
     basic_time_step: float = 32.0
     substeps: int = 1

@@ -55,6 +55,7 @@ def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
     """Options from WorldInfo: gravity, time step and substeps, seed, default damping."""
     spec, table = ctx.spec, ctx.table
     table.coordinate_system = ctx.scene.coordinate_system if ctx.scene.coordinate_system == "NUE" else "ENU"
+    table.webots_version = str(ctx.scene.version) if ctx.scene.version is not None else ""
     if ctx.scene.coordinate_system == "EUN":
         ctx.warn("the EUN coordinate system is not supported by wbtc yet; the world is read as ENU", None)
     table.to_model = NUE_TO_ENU if table.coordinate_system == "NUE" else np.eye(3)

@@ -46,7 +46,7 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
         "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
                   "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
                   "supervisor": entry.supervisor, "synchronization": entry.synchronization,
-                  "coordinate_system": sim.table.coordinate_system},
+                  "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version},
         "time": sim.time, "devices": devices,
     }
 

@@ -63,6 +63,7 @@ class Session:
         self.supervisor = bool(robot.get("supervisor", False))
         self.synchronization = bool(robot.get("synchronization", True))
         self.coordinate_system = str(robot.get("coordinate_system") or "ENU")
+        self.webots_version = str(robot.get("webots_version") or "")
         self.time = float(init.get("time") or 0.0)
         self.states = [DeviceState(info) for info in init.get("devices") or []]
         self.by_tag = {state.tag: state for state in self.states}
@@ -264,6 +265,20 @@ class Session:
         self.pending_fields.clear()
         self.pending_mode = None
         self.epoch += 1
+
+
+def written_before(version: str, year: int, letter: str) -> bool:
+    """Whether a world header's version (``R2021c``, ``V8.5``) is older than ``R<year><letter>``.
+
+    Unknown or empty versions count as recent: the current API applies. (Parsed by hand: ``re``
+    would add to every controller's start-up.)
+    """
+    text = version.strip()
+    if text[:1] == "V" and text[1:2].isdigit():
+        return True  # Webots 6 to 8: older than every R release
+    if text[:1] == "R" and text[1:5].isdigit() and text[5:6].isalpha():
+        return (int(text[1:5]), text[5]) < (year, letter)
+    return False
 
 
 _current: Session | None = None

@@ -85,8 +85,14 @@ class Receiver(Sensor):
         packet = self._head("wb_receiver_get_data")
         return "" if packet is None else packet.data.decode()
 
-    def getData(self) -> str:
-        """Deprecated: same as ``getString()`` (it returned bytes before R2023b)."""
+    def getData(self) -> str | bytes:
+        """The head packet: bytes in a world written before R2023b (that release's API), else as ``getString()``.
+
+        Webots R2023b made ``getData`` a deprecated alias of ``getString``; a controller of an older
+        world decodes or unpacks the bytes itself (``getData().decode()``, ``struct.unpack``).
+        """
+        if _session.written_before(_session.require().webots_version, 2023, "b"):
+            return self.getBytes()
         _session.error("DEPRECATION: Receiver.getData is deprecated, please use Receiver.getString instead.")
         return self.getString()
 
