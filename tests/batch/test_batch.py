@@ -129,3 +129,29 @@ def test_a_dying_worker_is_retried_once(tmp_path, mode, status, starts):
     assert marker.read_text().count("start") == starts
     if status == "failed":
         assert row["message"].startswith("its worker process died (exit status -9), on each of 2 attempts; ")
+
+
+FORK_PROBE = """
+import sys
+from pathlib import Path
+import wbtc.batch.pool as pool
+from wbtc.batch.runner import run_batch
+
+kinds = []
+adopt = pool.LocalPool._adopt
+pool.LocalPool._adopt = lambda self, worker: kinds.append(type(worker).__name__) or adopt(self, worker)
+summary = run_batch(Path(sys.argv[1]), workers=2, progress=lambda text: None)
+print(sorted(kinds), summary.statuses, sorted(row["message"] for row in summary.rows))
+"""
+
+
+def test_a_small_scheduler_forks_its_warm_workers(tmp_path):
+    # A scheduler of its own (as `wbtc batch` is) forks its first workers once it has loaded the
+    # plan's world: each run is still its own process and reads the same.
+    plan = make_plan(tmp_path, "", DRIVE)
+    with plan.open("a", encoding="utf-8") as stream:
+        stream.write('[args]\ne-puck = [["2"], ["4"], ["3"]]\n')
+    done = subprocess.run([sys.executable, "-c", FORK_PROBE, str(plan)], capture_output=True, text=True,
+                          cwd=tmp_path)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() == "['ForkedWorker', 'ForkedWorker'] {'done': 3} ['speed 2', 'speed 3', 'speed 4']"

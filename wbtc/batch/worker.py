@@ -215,10 +215,23 @@ def main() -> None:
     os.dup2(2, 1)  # stray prints must not corrupt the channel
     import wbtc.api  # noqa: F401  (warm: paid once per worker)
 
+    serve(channel_in, channel_out)
+
+
+def serve(channel_in: IO[bytes], channel_out: IO[bytes]) -> None:
+    """Answer jobs from `channel_in` with outcomes on `channel_out` until `channel_in` closes."""
     while True:
         try:
             job = receive(channel_in)
         except EOFError:
             return
         send(channel_out, execute(job, watch=channel_in.fileno()))
+
+
+def warm(worlds: list[str]) -> None:
+    """Import what runs need and load each world once, here (a process that forks workers later)."""
+    import wbtc.api  # noqa: F401
+
+    for world in worlds:
+        _warm(world)
 
