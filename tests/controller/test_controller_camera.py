@@ -151,3 +151,27 @@ def test_recognition(sim) -> None:
         "Please use: wb_camera_recognition_enable().",
         "Error: wb_camera_recognition_enable() called on a Camera without Recognition node.",
     ]
+
+
+def test_image_is_black_between_the_first_step_and_the_first_sample(sim) -> None:
+    # Webots' api/camera_image_update: NULL before the step that follows the enable, then the image
+    # memory exists, filled with zeros, until the camera's first sample.
+    fake = sim(
+        """
+        from controller import Robot
+        robot = Robot()
+        camera = robot.getDevice("camera")
+        camera.enable(64)
+        print(camera.getImage() is None)
+        robot.step(32)
+        print(camera.getImage().hex())
+        robot.step(32)
+        print(camera.getImage()[:4].hex())
+        """,
+        make_init(CAMERAS),
+    )
+    fake.step(time=0.032)
+    fake.step(time=0.064, values={0: {"shm": None, "data": IMAGE, "width": WIDTH, "height": HEIGHT}})
+    rc, out, _ = fake.finish()
+    assert rc == 0
+    assert out.splitlines() == ["True", "00" * 4 * WIDTH * HEIGHT, IMAGE[:4].hex()]

@@ -116,11 +116,24 @@ class Camera(Sensor):
     # -- image ----------------------------------------------------------------------------------------------
     @checked("get_image")
     def getImage(self) -> bytes | None:
-        """The last image: BGRA bytes, pixel (x, y) at offset 4·(y·width + x)."""
-        if self._s.period <= 0:
+        """The last image: BGRA bytes, pixel (x, y) at offset 4·(y·width + x).
+
+        None before the camera is enabled and until a step has passed since; from then on, until
+        its first sample, a black image (Webots' image memory exists once the step that follows
+        the enable has run, filled with zeros).
+        """
+        state = self._s
+        if state.period <= 0:
             _session.error("Error: wb_camera_get_image() called for a disabled device! Please use: wb_camera_enable().")
             return None
-        return self._s.value
+        if state.value is None and _session.require().time > getattr(state, "enabled_at", math.inf):
+            return bytes(4 * self.getWidth() * self.getHeight())
+        return state.value
+
+    def _set_period(self, period: int) -> None:
+        super()._set_period(period)
+        if period and getattr(self._s, "enabled_at", math.inf) == math.inf:
+            self._s.enabled_at = _session.require().time  # type: ignore[attr-defined]
 
     def getImageArray(self) -> list[list[list[int]]] | None:
         """The image as ``width`` lists of ``height`` [r, g, b] pixels, filled in memory order like Webots does."""
