@@ -17,11 +17,9 @@ from __future__ import annotations
 from pathlib import Path
 
 from wbtc.errors import Diagnostic, Span, WbtcError
-from wbtc.runtime.controllers import find_controller
+from wbtc.runtime.controllers import NO_CONTROLLER, controller_folders, find_controller
 from wbtc.scene.model import Node, Scene
 
-#: Controller names that need no program (Webots' own placeholders).
-_NO_PROGRAM = frozenset({"", "<none>", "<generic>", "void"})
 #: Source files of the languages wbtc does not run, by the suffix Webots looks for.
 _OTHER_LANGUAGES = {".c": "C", ".cpp": "C++", ".cc": "C++", ".java": "Java", ".m": "MATLAB"}
 
@@ -52,13 +50,13 @@ def _robots(scene: Scene) -> list[Node]:
 
 def _controller_check(robot: Node, world: Path) -> list[Diagnostic]:
     name = str(robot.get("controller") or "")
-    if name in _NO_PROGRAM or name == "<extern>":
+    if name in NO_CONTROLLER or name == "<extern>":
         return []
     if find_controller(world, name) is not None:
         return []
     span = _controller_span(robot)
     label = str(robot.get("name"))
-    for folder in _controller_folders(world):
+    for folder in controller_folders(world):
         source = next((folder / name / f"{name}{suffix}" for suffix in _OTHER_LANGUAGES
                        if (folder / name / f"{name}{suffix}").is_file()), None)
         if source is not None:
@@ -72,11 +70,6 @@ def _controller_check(robot: Node, world: Path) -> list[Diagnostic]:
                                hint=f"move it to controllers/{name}/{name}.py")]
     return [Diagnostic(f"robot {label!r}: controller {name!r} not found (looked for controllers/{name}/{name}.py "
                        "beside the world's folder and in it)", span, "warning")]
-
-
-def _controller_folders(world: Path) -> list[Path]:
-    world_dir = world.resolve().parent
-    return [world_dir.parent / "controllers", world_dir / "controllers"]
 
 
 def _controller_span(robot: Node) -> Span | None:

@@ -31,7 +31,7 @@ from typing import IO, Any
 from wbtc._child.controller.wire import FrameReader, WireClosed, recv_frame, send_frame
 from wbtc.resources import child_path
 
-NO_CONTROLLER = frozenset({"", "<none>", "<generic>"})
+NO_CONTROLLER = frozenset({"", "<none>", "<generic>", "void"})  # "void": older worlds' name for none
 
 #: Where a controller's output lines go: (robot name, "stdout" or "stderr", line without newline).
 OutputSink = Callable[[str, str, str], None]
@@ -59,12 +59,16 @@ def print_output(robot: str, stream: str, line: str) -> None:
     print(f"[{robot}] {line}", file=sys.stderr if stream == "stderr" else sys.stdout, flush=True)
 
 
+def controller_folders(world: Path) -> list[Path]:
+    """The `controllers` folders a world's controllers are looked for in, first match wins."""
+    world_dir = world.resolve().parent
+    return [world_dir.parent / "controllers", world_dir / "controllers"]
+
+
 def find_controller(world: Path, name: str) -> Path | None:
     """The Python file of controller `name` for `world`, or None."""
-    world_dir = world.resolve().parent
-    candidates = [world_dir.parent / "controllers" / name / f"{name}.py",
-                  world_dir / "controllers" / name / f"{name}.py",
-                  world_dir / f"{name}.py"]
+    candidates = [folder / name / f"{name}.py" for folder in controller_folders(world)]
+    candidates.append(world.resolve().parent / f"{name}.py")  # a flat layout: the script beside the world
     return next((c for c in candidates if c.is_file()), None)
 
 

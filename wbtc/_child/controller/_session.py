@@ -7,6 +7,7 @@ Python objects for one device (``getDevice``, ``Motor.getPositionSensor()``, ``D
 from __future__ import annotations
 
 import atexit
+import math
 import sys
 import weakref
 
@@ -38,6 +39,7 @@ class DeviceState:
         self.info = info
         self.fields: dict = info.get("fields") or {}
         self.period = 0
+        self.enabled_at = math.inf  # the time of the first enable (a camera's image exists a step later)
         self.value: Any = None
         self.absorb: Callable[[DeviceState, Any], None] | None = None
 

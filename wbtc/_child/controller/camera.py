@@ -126,14 +126,14 @@ class Camera(Sensor):
         if state.period <= 0:
             _session.error("Error: wb_camera_get_image() called for a disabled device! Please use: wb_camera_enable().")
             return None
-        if state.value is None and _session.require().time > getattr(state, "enabled_at", math.inf):
+        if state.value is None and _session.require().time > state.enabled_at:
             return bytes(4 * self.getWidth() * self.getHeight())
         return state.value
 
     def _set_period(self, period: int) -> None:
         super()._set_period(period)
-        if period and getattr(self._s, "enabled_at", math.inf) == math.inf:
-            self._s.enabled_at = _session.require().time  # type: ignore[attr-defined]
+        if period and self._s.enabled_at == math.inf:
+            self._s.enabled_at = _session.require().time
 
     def getImageArray(self) -> list[list[list[int]]] | None:
         """The image as ``width`` lists of ``height`` [r, g, b] pixels, filled in memory order like Webots does."""
