@@ -24,6 +24,7 @@ from wbtc.compile import legacy_protos
 from wbtc.compile.context import VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import Frame, mat_to_quat, quat_mul
 from wbtc.compile.table import DeviceEntry, RobotEntry, plain_fields
+from wbtc.scene.legacy_nodes import differential_wheels_fields
 from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
@@ -63,6 +64,7 @@ def add_robot(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> RobotEnt
         supervisor=bool(node.get("supervisor")), synchronization=bool(node.get("synchronization")),
         model=str(node.get("model") or ""),
     )
+    entry.legacy = differential_wheels_fields(node)  # old robots' controller API (scene.legacy_nodes)
     ctx.table.robots.append(entry)
     return entry
 

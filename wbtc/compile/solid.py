@@ -32,6 +32,7 @@ import numpy as np
 from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller
 from wbtc.compile.context import KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
+from wbtc.compile.kinematic_drive import find_drive
 from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
 from wbtc.scene.model import Node, Scene
 
@@ -193,6 +194,8 @@ class BodyBuilder:
         if node.is_a("Robot"):
             robot = device.add_robot(node, body, ctx)
             robot.rub = turn is not None
+            if top_level:
+                robot.drive = find_drive(node)
         # Old Solids had a `scale` field (graphics only); it scales what the Solid holds.
         scale = np.asarray(node.fields["scale"], dtype=float) if "scale" in node.fields else None
         inner = Frame(np.zeros(3), np.array([1.0, 0, 0, 0]), frame.scale if scale is None else frame.scale * scale)

@@ -60,6 +60,23 @@ class DeviceEntry:
 
 
 @dataclass
+class KinematicDrive:
+    """Two wheel motors that move a robot without Physics over the ground, as Webots does.
+
+    Attributes:
+        motors: the two wheels' motors (device names; which is left needs not be known).
+        radius: the wheels' radius (m).
+        axle: the distance between the wheels (m); None: the distance between the two hinge anchors.
+        slip_noise: a DifferentialWheels' `slipNoise` (relative, uniform, per wheel and step).
+    """
+
+    motors: tuple[str, str]
+    radius: float
+    axle: float | None = None
+    slip_noise: float = 0.0
+
+
+@dataclass
 class RobotEntry:
     """One robot: its controller settings and devices, in Webots' device order."""
 
@@ -74,6 +91,8 @@ class RobotEntry:
     model: str
     devices: list[DeviceEntry] = field(default_factory=list)
     rub: bool = False  # an R2022a+ PROTO robot placed by an older file (see compile.legacy_protos)
+    drive: KinematicDrive | None = None  # wheels that move a robot without Physics (compile.kinematic_drive)
+    legacy: dict[str, Any] = field(default_factory=dict)  # a DifferentialWheels' controller-side fields
 
     def device(self, name: str) -> DeviceEntry | None:
         """The device with this Webots name, or None."""

@@ -26,6 +26,7 @@ from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
 from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.scene.build import NodeBuilder
+from wbtc.scene.legacy_nodes import convert_differential_wheels
 from wbtc.scene.model import Node, Scene, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
@@ -378,6 +379,7 @@ def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:
     result = expander.result
     if result.errors:
         raise ProtoError("", diagnostics=result.errors[:40])
+    result.warnings += convert_differential_wheels(nodes)
     expanded_scene = replace(scene, nodes=nodes, warnings=scene.warnings + result.warnings)
     return expanded_scene, result
 

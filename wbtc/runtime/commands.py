@@ -46,7 +46,8 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
         "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
                   "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
                   "supervisor": entry.supervisor, "synchronization": entry.synchronization,
-                  "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version},
+                  "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version,
+                  "differential_wheels": entry.legacy or None},
         "time": sim.time, "devices": devices,
     }
 

@@ -18,6 +18,7 @@ import mujoco
 
 from wbtc.compile.compiler import CompileResult
 from wbtc.runtime.devices import Emitter, Led, Receiver
+from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.poses import dof_width
 from wbtc.runtime.rays import RayCaster
@@ -66,6 +67,22 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
         if old is not None:
             carry_devices(old, state, sim, keep_time)
         sim.robots.append(state)
+    _carry_driven_poses(sim, old_model, old_robots if keep_time else [])
+
+
+def _carry_driven_poses(sim: Simulation, old_model: mujoco.MjModel, old_robots: list[RobotState]) -> None:
+    """Robots a kinematic drive moved keep where it took them (their root bodies have no joint to copy).
+
+    `old_robots` is empty when the world starts over (a reset): then they start where the file puts them.
+    """
+    moved = {old_model.body(r.body).name: r.body for r in old_robots if r.entry.drive is not None}
+    for robot in sim.robots:
+        name = sim.model.body(robot.body).name
+        if robot.entry.drive is not None and name in moved:
+            sim.model.body_pos[robot.body] = old_model.body_pos[moved[name]]
+            sim.model.body_quat[robot.body] = old_model.body_quat[moved[name]]
+    mujoco.mj_forward(sim.model, sim.data)
+    sim.drives = [DriveState(r.entry.drive, sim, r) for r in sim.robots if r.entry.drive is not None]
 
 
 def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:

@@ -20,6 +20,7 @@ from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
+from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.offscreen import Offscreen
@@ -85,6 +86,7 @@ class Simulation:
         mujoco.mj_forward(self.model, self.data)
         self._start_velocities()
         self.robots = [self._robot(entry) for entry in self.table.robots]
+        self.drives = [DriveState(r.entry.drive, self, r) for r in self.robots if r.entry.drive is not None]
 
     def _start_velocities(self) -> None:
         """Start each Solid with Physics at its written `linearVelocity`/`angularVelocity`.
@@ -203,7 +205,11 @@ class Simulation:
             drag.update(model, data)
         if self.kinematic:
             self._move_kinematic(ts)
+        for drive in self.drives:
+            drive.move(ts)
         self._integrate(model, data)
+        for drive in self.drives:
+            drive.turn_wheels()
         if self.unstable_at is None:
             if self._badqacc[0] is not data:  # the warning's live view, made once per MjData
                 self._badqacc = (data, data.warning[_BADQACC])

@@ -92,7 +92,12 @@ class NodeBuilder:
         schema = node_schema(syntax.type_name)
         node = Node(syntax.type_name, syntax.span, schema, syntax.def_name)
         self.count += 1
-        if schema is not None and schema.name != syntax.type_name:
+        if syntax.type_name == "Supervisor" and schema is not None:
+            # A Supervisor node (before R2018b) is a Robot with supervisor rights, as Webots converts it.
+            node.fields["supervisor"] = True
+            self._warn_once(syntax.type_name, "", "Supervisor is an old node type (before R2018b): Webots reads "
+                            "it as a Robot with supervisor TRUE", syntax.span)
+        elif schema is not None and schema.name != syntax.type_name:
             self._warn_once(syntax.type_name, "", f"{syntax.type_name} is an old name: Webots reads it as "
                             f"{schema.name}", syntax.span)
         elif schema is not None and schema.deprecated:

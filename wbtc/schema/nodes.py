@@ -807,4 +807,6 @@ ALIASES: dict[str, str] = {
     "CameraFocus": "Focus",
     "CameraLensDistortion": "Lens",
     "CameraZoom": "Zoom",
+    # Before R2018b a supervisor robot was a node type of its own; its `supervisor` field is set (scene.build).
+    "Supervisor": "Robot",
 }

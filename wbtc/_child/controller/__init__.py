@@ -21,7 +21,8 @@ if TYPE_CHECKING:
 _MODULES = {
     "Accelerometer": "accelerometer", "Altimeter": "altimeter", "AnsiCodes": "ansi_codes", "Brake": "brake",
     "Camera": "camera", "CameraRecognitionObject": "camera", "Compass": "compass", "Connector": "connector",
-    "ContactPoint": "contact_point", "Display": "display", "DistanceSensor": "distance_sensor", "Emitter": "emitter",
+    "ContactPoint": "contact_point", "DifferentialWheels": "differential_wheels",
+    "Display": "display", "DistanceSensor": "distance_sensor", "Emitter": "emitter",
     "Field": "field", "GPS": "gps", "Gyro": "gyro", "InertialUnit": "inertial_unit", "Joystick": "joystick",
     "Keyboard": "keyboard", "LED": "led", "Lidar": "lidar", "LidarPoint": "lidar_point", "LightSensor": "light_sensor",
     "Motion": "motion", "Motor": "motor", "Mouse": "mouse", "MouseState": "mouse", "Node": "node", "Pen": "pen",
