@@ -7,8 +7,9 @@ folded into the rgba with the material's `emission` so lit LEDs glow.
 
 Not honoured yet: Material `ambientIntensity`, `shininess` and `specularColor` beyond a rough
 specular; PBRAppearance maps other than `baseColorMap` (roughness, metalness, normal, occlusion,
-emissive maps), `IBLStrength`; TextureTransform `center`, `rotation` and `translation`;
-ImageTexture `filtering`.
+emissive maps), `IBLStrength`; TextureTransform `center`, `rotation` and `translation` on
+primitives (a mesh's texture coordinates carry the whole transform: `geometry._mesh`); ImageTexture
+`filtering`.
 """
 
 from __future__ import annotations
@@ -49,7 +50,11 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
                      texture_node.span)
     if path is None and emission == 0.0:
         return rgba, None, None
-    repeat = _texture_repeat(appearance)
+    geometry_node = shape.get("geometry")
+    meshed = isinstance(geometry_node, Node) and geometry_node.base_type in ("IndexedFaceSet", "Mesh")
+    # A mesh's texture coordinates carry the TextureTransform (geometry._mesh); MuJoCo's own texture
+    # mapping of primitives only gets the transform's scale, as the material's repeat.
+    repeat = (1.0, 1.0) if meshed else _texture_repeat(appearance)
     name = _material(ctx, rgba, emission, specular, shininess, path, repeat, appearance)
     if path is not None:
         # A textured material carries the colour; the geom's rgba stays white so it does not tint twice.

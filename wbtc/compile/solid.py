@@ -139,8 +139,11 @@ class BodyBuilder:
         if not isinstance(geom_node, Node) or geom_node.base_type not in geometry.GEOMETRY_TYPES:
             return []
         rgba, material, _ = appearance.shape_look(shape, self.ctx)
+        look = shape.get("appearance")
+        transform = look.get("textureTransform") if isinstance(look, Node) else None
         made = geometry.add_geometry(body, geom_node, frame, self.ctx, collision=False, rgba=rgba,
-                                     material=material, name=name)
+                                     material=material, name=name,
+                                     texture_transform=transform if isinstance(transform, Node) else None)
         if made is None:
             return []
         return [made[0].name] if made[0].name else []

@@ -8,14 +8,15 @@ What it maps:
 * Image files -> `TextureData` (8-bit RGB rows, top row first, plus whether the image is
   transparent) through Pillow: JPEG and PNG as in Webots, and whatever else Pillow reads.
 * Image files -> PNG copies for MJCF output (`texture_to_png`): MuJoCo reads PNG textures only.
-* `TextureTransform` -> transformed texture coordinates (`apply_texture_transform`), since MuJoCo
-  has no texture transform of its own.
+* `TextureTransform` -> transformed texture coordinates of meshes (`apply_texture_transform`), since
+  MuJoCo has no texture transform of its own.
 
 Not honoured yet:
 
 * `webots://` URLs (they need a Webots installation) and `http(s)://` URLs (wbtc never uses the
   network): `resolve_url` skips them, and gives None when nothing else is left.
-* ImageTexture `repeatS`/`repeatT` (MuJoCo always repeats) and `filtering` (rendering only).
+* ImageTexture `repeatS`/`repeatT` FALSE (MuJoCo always repeats: a clamped texture's coordinates
+  outside [0, 1] show it again instead of its edge texels) and `filtering` (rendering only).
 * Image orientation metadata (EXIF): ignored, as Webots' Qt image reader ignores it.
 """
 
