@@ -66,7 +66,11 @@ def store_pose(node: Node, name: str, value: Any) -> None:
 
 
 def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Node:
-    """Parse, expand and insert one node written in VRML into an SFNode or MFNode field."""
+    """Parse, expand and insert the nodes written in VRML into an SFNode or MFNode field.
+
+    An MFNode field gets every node of the text, in order, from `position` on (Webots imports
+    "Solid { } Solid { }" as two nodes); an SFNode field gets the first one. Returns the first node.
+    """
     scene = tree.scene
     items = parse_body("{ " + text + " }", str(scene.path))
     builder = NodeBuilder(str(scene.path), scene.version)
@@ -77,23 +81,27 @@ def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Nod
         raise WbtcError("the text holds no node")
     expander = Expander(scene)
     resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
-    node = expander.expand(built[0], resolver, top_level=ref.node is tree.root)
-    if expander.result.errors:
-        raise WbtcError(expander.result.errors[0].message)
-    if node is None:
-        raise WbtcError(f"the PROTO of '{built[0].type_name}' was not found")
+    nodes = []
+    for raw in built if ref.type != "SFNode" else built[:1]:
+        node = expander.expand(raw, resolver, top_level=ref.node is tree.root)
+        if expander.result.errors:
+            raise WbtcError(expander.result.errors[0].message)
+        if node is None:
+            raise WbtcError(f"the PROTO of '{raw.type_name}' was not found")
+        nodes.append(node)
     if ref.type == "SFNode":
-        tree.store(ref, node)
+        tree.store(ref, nodes[0])
     else:
         items = tree.raw(ref)
         if items is None:
             items = []
             tree.store(ref, items)
-        items.insert(position if position >= 0 else len(items) + position + 1, node)
+        at = position if position >= 0 else len(items) + position + 1
+        items[at:at] = nodes
         if ref.node is not tree.root and ref.node.proto is None:
             ref.node.fields[ref.name] = items
     tree.refresh()
-    return node
+    return nodes[0]
 
 
 def reexpand(tree: SceneTree, node: Node) -> Node:

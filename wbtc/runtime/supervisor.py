@@ -27,6 +27,7 @@ settings are used), pose and contact-point tracking (answered on demand).
 
 from __future__ import annotations
 
+import math
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -144,6 +145,8 @@ class SupervisorHub:
         if op == "getNumberOfFields":
             return len(tree.field_names(node, node.proto is not None and not (args and bool(args[0]))))
         if op in ("getPosition", "getOrientation", "getPose"):
+            if not node.is_a("Pose"):  # Webots: a node that is no Pose (a Group, an Appearance) has no pose
+                return [math.nan] * {"getPosition": 3, "getOrientation": 9, "getPose": 16}[op]
             rot, pos = poses.world_pose(sim, node, self.tree.parent)
             if op == "getPosition":
                 return [float(v) for v in pos]

@@ -1,0 +1,63 @@
+"""Supervisor node calls as Webots answers them: no pose for nodes that are not poses, every imported node."""
+
+import math
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from wbtc.cli import app
+
+WORLD = """#VRML_SIM R2025a utf8
+WorldInfo {
+  basicTimeStep 32
+}
+DEF BOX Solid {
+  translation 1 0 0.1
+  children [
+    Shape {
+      appearance DEF APP Appearance {
+      }
+      geometry Box {
+        size 0.1 0.1 0.1
+      }
+    }
+  ]
+}
+DEF GROUP Group {
+}
+Robot {
+  controller "probe"
+  supervisor TRUE
+}
+"""
+PROBE = """from controller import Supervisor
+
+s = Supervisor()
+s.step(32)
+print("box", s.getFromDef("BOX").getPosition())
+app = s.getFromDef("APP")
+print("appearance", app.getPosition(), len(app.getOrientation()), len(app.getPose()))
+print("orientation nan", all(v != v for v in app.getOrientation()), all(v != v for v in app.getPose()))
+children = s.getFromDef("GROUP").getField("children")
+children.importMFNodeFromString(-1, 'Solid { name "a" } Solid { name "b" }')
+children.importMFNodeFromString(0, 'Pose { }')
+print("imported", children.getCount(), [children.getMFNode(i).getTypeName() for i in range(children.getCount())])
+print("names", [children.getMFNode(i).getField("name").getSFString() for i in (1, 2)])
+"""
+
+
+def test_poses_of_non_pose_nodes_are_nan_and_every_imported_node_is_added(tmp_path: Path):
+    (tmp_path / "controllers" / "probe").mkdir(parents=True)
+    (tmp_path / "controllers" / "probe" / "probe.py").write_text(PROBE)
+    (tmp_path / "worlds").mkdir()
+    (tmp_path / "worlds" / "w.wbt").write_text(WORLD)
+    result = CliRunner().invoke(app, ["run", str(tmp_path / "worlds" / "w.wbt"), "--headless", "--duration", "0.1"])
+    assert result.exit_code == 0, result.output
+    lines = {line.split("] ", 1)[1].split(" ", 1)[0]: line.split("] ", 1)[1] for line in result.output.splitlines()
+             if line.startswith("[robot] ")}
+    assert lines["box"] == "box [1.0, 0.0, 0.1]"
+    position = lines["appearance"].split("[")[1].split("]")[0].split(", ")
+    assert all(math.isnan(float(v)) for v in position) and lines["appearance"].endswith("] 9 16")
+    assert lines["orientation"] == "orientation nan True True"
+    assert lines["imported"] == "imported 3 ['Pose', 'Solid', 'Solid']"
+    assert lines["names"] == "names ['a', 'b']"
