@@ -91,14 +91,30 @@ class Offscreen:
         self.cull = True
         self.hidden_group = int(np.flatnonzero(~shown)[-1]) if not shown.all() else -1
 
+    def depth(self, data: mujoco.MjData, camera: int, near: float, far: float) -> np.ndarray:
+        """Render model camera `camera` and read its depth: metres to the image plane, rows from the bottom.
+
+        The frustum runs from `near` to `far`; where nothing is drawn before `far` the depth is inf.
+        """
+        self.draw(data, camera, near, far=far)
+        raw = np.empty((self.height, self.width), dtype=np.float32)
+        mujoco.mjr_readPixels(None, raw, self.rect, self.context)
+        # MuJoCo reads depth 0 at the near plane and 1 at the far one (its default mjDEPTH_ZERONEAR);
+        # the complement, 0 at the far plane, is n (f - z) / (z (f - n)) for a perspective camera.
+        zero_far = 1.0 - raw.astype(np.float64)
+        metres = near * far / (near + zero_far * (far - near))
+        metres[raw >= 1.0 - 1e-7] = np.inf
+        return metres
+
     def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
-             pose: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
+             pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None) -> np.ndarray:
         """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
 
         Args:
             data: the simulation state to draw.
             camera: model camera id, or -1.
             near: near clipping distance in metres (None: MuJoCo's).
+            far: far clipping distance in metres (None: MuJoCo's).
             pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
 
         Returns:
@@ -138,6 +154,9 @@ class Offscreen:
                 glcam.frustum_top *= scale
                 glcam.frustum_center *= scale
                 glcam.frustum_width *= scale
+        if far is not None and far > 0:
+            for glcam in self.scene.camera:
+                glcam.frustum_far = far
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         mujoco.mjr_render(self.rect, self.scene, self.context)
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)

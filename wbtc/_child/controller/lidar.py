@@ -26,7 +26,8 @@ class Lidar(Sensor):
         state.layers = int(state.field("numberOfLayers", 4))
         state.frequency = float(state.field("defaultFrequency", 10.0))
         state.point_cloud = False
-        state.value = [NAN] * (state.resolution * state.layers)
+        # Webots hands out its zero-filled image memory until the first sample lands in it.
+        state.value = [0.0] * (state.resolution * state.layers)
         state.points = []
 
     @staticmethod

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from array import array
 
 from . import _images, _session
@@ -56,7 +57,9 @@ class RangeFinder(Sensor):
 
     @checked("save_image", -1)
     def saveImage(self, filename: str, quality: int) -> int:
-        """Save the depths as a grey PNG (black at 0, white at maxRange); -1 on failure."""
+        """Save the depths: an .hdr file keeps the metres, PNG/JPEG are grey (black at 0, white at maxRange)."""
+        if filename and filename.lower().endswith(".hdr"):
+            return _write_hdr(filename, self._s.width, self._s.height, self._s.value)
         top = self.getMaxRange() or 1.0
         grey = bytes(int(255 * max(0.0, min(1.0, d / top))) if d == d else 0 for d in self._s.value)
         rgba = bytes(b for g in grey for b in (g, g, g, 255))
@@ -93,3 +96,23 @@ class RangeFinder(Sensor):
     height = property(getHeight, doc="Image height.")
     max_range = property(getMaxRange, doc="The maxRange field.")
     min_range = property(getMinRange, doc="The minRange field.")
+
+
+def _rgbe(value: float) -> bytes:
+    """One grey pixel of a Radiance picture: a shared 8-bit mantissa and the exponent + 128."""
+    if not value > 1e-32 or value == float("inf"):  # nothing in range (inf, NaN) is stored as 0
+        return b"\0\0\0\0"
+    mantissa, exponent = math.frexp(value)
+    level = int(mantissa * 256.0)
+    return bytes((level, level, level, exponent + 128))
+
+
+def _write_hdr(filename: str, width: int, height: int, depths: Any) -> int:
+    """Write the depths (metres) as an uncompressed Radiance .hdr picture, rows from the top; 0 or -1."""
+    header = f"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y {height} +X {width}\n".encode("ascii")
+    try:
+        with open(filename, "wb") as out:
+            out.write(header + b"".join(_rgbe(float(d)) for d in depths))
+    except OSError:
+        return -1
+    return 0

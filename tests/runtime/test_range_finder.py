@@ -1,0 +1,71 @@
+"""RangeFinder: planar depth from the device camera, inf out of range, NaN before the first sample, .hdr files."""
+
+import math
+from pathlib import Path
+
+from typer.testing import CliRunner
+
+from wbtc.cli import app
+
+WORLD = """#VRML_SIM R2025a utf8
+WorldInfo {
+  basicTimeStep 16
+}
+Solid {
+  translation 1.5 0 0.5
+  children [
+    Shape {
+      geometry Box {
+        size 0.2 0.8 0.4
+      }
+    }
+  ]
+}
+Robot {
+  children [
+    RangeFinder {
+      translation 0.1 0 0.5
+      width 8
+      height 6
+      maxRange 5
+    }
+  ]
+  controller "probe"
+}
+"""
+PROBE = """from controller import Robot
+
+robot = Robot()
+rf = robot.getDevice("range-finder")
+rf.enable(16)
+print("before", rf.getRangeImage()[0])
+robot.step(16)
+image = rf.getRangeImageArray()
+print("rows", " ".join(",".join("%.4f" % d for d in row) for row in image))
+print("saved", rf.saveImage("depth.hdr", 100))
+"""
+
+
+def test_a_range_finder_sees_the_wall_at_its_planar_depth(tmp_path: Path):
+    (tmp_path / "controllers" / "probe").mkdir(parents=True)
+    (tmp_path / "controllers" / "probe" / "probe.py").write_text(PROBE)
+    (tmp_path / "worlds").mkdir()
+    (tmp_path / "worlds" / "w.wbt").write_text(WORLD)
+    result = CliRunner().invoke(app, ["run", str(tmp_path / "worlds" / "w.wbt"), "--headless", "--duration", "0.05"])
+    assert result.exit_code == 0, result.output
+    out = {line.split()[1]: line.split()[2:] for line in result.output.splitlines() if line.startswith("[robot] ")}
+    assert math.isnan(float(out["before"][0]))
+    rows = [[float(v) for v in row.split(",")] for row in out["rows"]]
+    assert len(rows) == 6 and all(len(row) == 8 for row in rows)
+    # The box's face is 1.3 m ahead: 0.8 m wide and 0.4 m high, it fills the middle of the 45° view
+    # (±0.54 m across, ±0.40 m up at 1.3 m); planar depth reads 1.3 off the axis too.
+    middle = [rows[r][c] for r in (2, 3) for c in (2, 3, 4, 5)]
+    assert all(abs(d - 1.3) < 2e-3 for d in middle)
+    # Nothing else in the world: above and below the box, and at the corners, nothing is in range.
+    assert all(math.isinf(d) for d in (rows[0][0], rows[0][7], rows[5][0], rows[5][7]))
+    assert out["saved"] == ["0"]
+    data = (tmp_path / "controllers" / "probe" / "depth.hdr").read_bytes()  # controllers run in their folder
+    header = b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 6 +X 8\n"
+    assert data.startswith(header) and len(data) == len(header) + 4 * 48
+    level, _, _, exponent = data[len(header) + 4 * (3 * 8 + 3):][:4]
+    assert abs((level + 0.5) / 256 * 2 ** (exponent - 128) - 1.3) < 0.01
