@@ -45,3 +45,19 @@ def test_a_ball_falls_from_its_default_height_and_rests_on_the_floor(tmp_path: P
     mujoco.mj_forward(model, sim.data)
     assert sim.data.xpos[ball][2] == pytest.approx(0.0325, abs=1e-3)
     assert sim.data.xpos[big][2] == pytest.approx(0.1, abs=1e-3)
+
+
+def test_a_soccer_ball_has_webots_size_and_mass_and_rests_on_its_radius(tmp_path: Path):
+    world = tmp_path / "soccer.wbt"
+    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo {\n  basicTimeStep 16\n}\nFloor {\n}\n"
+                     "DEF SOCCER SoccerBall {\n  translation 0 0 0.3\n}\n")
+    result, _ = compile_world(world)
+    model = result.model
+    ball = model.body(result.table.bodies["SOCCER"]).id
+    assert model.body_mass[ball] == pytest.approx(0.6)
+    recognized = [r for r in result.table.recognizable if r.model == "soccer ball"]
+    assert [r.colors for r in recognized] == [[[1.0, 1.0, 1.0], [0.0, 0.0, 0.0]]]
+    sim = Simulation(result, noise=False)
+    for _ in range(200):
+        sim.step()
+    assert sim.data.xpos[ball][2] == pytest.approx(0.113, abs=1e-3)
