@@ -258,6 +258,17 @@ class Receiver(Sensor):
         packets, self.incoming = self.incoming, []
         return packets
 
+    def tick(self, sim: Simulation, now_ms: float) -> None:
+        """Sample when due; samples not sent to the controller yet add up.
+
+        Webots queues every packet, so a `step(3 × basicTimeStep)` brings the packets of all three periods.
+        """
+        if now_ms + 1e-9 >= self.next_due:
+            packets = self.sample(sim)
+            self.value = self.value + packets if self.fresh and isinstance(self.value, list) else packets
+            self.fresh = True
+            self.next_due += self.period
+
 
 class Emitter:
     """An Emitter's channel and range."""
