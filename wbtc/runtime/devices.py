@@ -281,6 +281,7 @@ class Emitter:
         self.kind = str(entry.fields.get("type", "radio"))
         self.aperture = float(entry.fields.get("aperture", -1))
         self.owner: int | None = None  # id of the robot's table entry, set by the simulation (no delivery to oneself)
+        self.bodies: frozenset[int] = frozenset()  # its robot's bodies, set by the simulation (see `deliver`)
 
 
 def _outside_cone(axis: np.ndarray, direction: np.ndarray, aperture: float) -> bool:
@@ -319,7 +320,8 @@ def deliver(sim: Simulation, packets: list[tuple[Emitter, bytes, int]], receiver
                 if _outside_cone(emitter_axis, -direction, emitter.aperture) or \
                         _outside_cone(mat[:, 0], direction, receiver.aperture):
                     continue
-                hit, _ = sim.rays.cast(pos, direction, dist, False, receiver.skip_bodies)
+                # Neither robot blocks its own device: an emitter inside its robot's body still sends.
+                hit, _ = sim.rays.cast(pos, direction, dist, False, receiver.skip_bodies | emitter.bodies)
                 if hit < dist - 1e-3:
                     continue
             strength = 1.0 / (dist * dist) if dist > 0 else math.inf

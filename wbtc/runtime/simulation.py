@@ -177,6 +177,7 @@ class Simulation:
         elif dev.type == "Emitter":
             state.emitters[tag] = Emitter(dev, self.model)
             state.emitters[tag].owner = id(state.entry)
+            state.emitters[tag].bodies = state.bodies
         elif dev.type == "Camera" and dev.camera:
             state.sensors[tag] = Camera(dev, self, state.bodies)
         elif dev.type == "Receiver":
