@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wbtc.compile import faceset, heightfield, meshes, textures
+from wbtc.compile import faceset, heightfield, meshes, texture_clamp, textures
 from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import LEGACY_PRIMITIVE_QUAT, Frame, quat_mul, quat_to_mat
 from wbtc.compile.mesh_mass import mesh_volume_and_inertia
@@ -54,7 +54,8 @@ class GeomSpec:
 
 def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileContext, *, collision: bool,
                  rgba: np.ndarray | None = None, material: str | None = None, name: str | None = None,
-                 texture_transform: Node | None = None) -> tuple[mujoco.MjsGeom, MassProps | None] | None:
+                 texture_transform: Node | None = None,
+                 texture_clamp: texture_clamp.Clamp | None = None) -> tuple[mujoco.MjsGeom, MassProps | None] | None:
     """Add the geom of one geometry node to `body`.
 
     Args:
@@ -67,13 +68,15 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
         material: the MuJoCo material of a visual geom.
         name: the geom's name, if it needs one.
         texture_transform: the Shape's TextureTransform: a mesh's texture coordinates carry it.
+        texture_clamp: the texture's axes whose repeat is FALSE: a mesh clamps its coordinates there.
 
     Returns:
         The geom and, for collision geoms, its unit-density mass properties; None when the node
         gives no geometry (an empty mesh, an unreadable file).
     """
     ctx.unhonoured(node, _UNHONOURED)
-    geom_spec = _geom_spec(node, frame, ctx, textured=material is not None, transform=texture_transform)
+    geom_spec = _geom_spec(node, frame, ctx, textured=material is not None, transform=texture_transform,
+                           clamp=texture_clamp)
     if geom_spec is None:
         return None
     geom = body.add_geom()
@@ -109,7 +112,7 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
 
 
 def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
-               transform: Node | None = None) -> GeomSpec | None:
+               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec | None:
     kind = node.base_type
     scale = np.abs(frame.scale)
     if kind in _LEGACY_AXIS_TYPES and ctx.legacy_axes(node):
@@ -141,7 +144,7 @@ def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         size = np.asarray(node.get("size"), dtype=float) * scale[:2] / 2
         return GeomSpec(mujoco.mjtGeom.mjGEOM_PLANE, np.array([size[0], size[1], 0.1]), frame)
     if kind in ("IndexedFaceSet", "Mesh"):
-        return _mesh(node, frame, ctx, textured, transform)
+        return _mesh(node, frame, ctx, textured, transform, clamp)
     if kind == "ElevationGrid":
         return _hfield(node, frame, ctx)
     return None
@@ -179,7 +182,7 @@ def _cone(node: Node, frame: Frame, ctx: CompileContext, scale: np.ndarray) -> G
 
 
 def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
-          transform: Node | None = None) -> GeomSpec | None:
+          transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec | None:
     found: list = []
     if node.base_type == "IndexedFaceSet":
         data = faceset.indexed_face_set(node, found)
@@ -190,14 +193,17 @@ def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         if node.base_type == "Mesh":
             ctx.warn("the Mesh's file cannot be read; it is left out", node.span)
         return None
-    vertices = np.asarray(data.vertices, dtype=float) * frame.scale
-    name = ctx.unique("mesh", f"{node.base_type}_{node.span.line}")
-    mesh = ctx.spec.add_mesh(name=name, uservert=vertices.ravel().tolist(),
-                             userface=np.asarray(data.faces).ravel().tolist())
+    vertices, faces, moved = np.asarray(data.vertices, dtype=float), np.asarray(data.faces), None
     if textured and data.texcoords is not None:
         # Webots transforms the coordinates with t upwards, then flips t into the image's rows (as
         # MuJoCo's v runs down): the transform goes first, and the material repeats nothing.
         moved = textures.apply_texture_transform(data.texcoords, transform)
+        if clamp is not None:
+            vertices, faces, moved = texture_clamp.clamp_to_edge(vertices, faces, moved, clamp)
+    name = ctx.unique("mesh", f"{node.base_type}_{node.span.line}")
+    mesh = ctx.spec.add_mesh(name=name, uservert=(vertices * frame.scale).ravel().tolist(),
+                             userface=np.asarray(faces).ravel().tolist())
+    if moved is not None:
         mesh.usertexcoord = np.column_stack([moved[:, 0], 1.0 - moved[:, 1]]).astype(np.float32).ravel().tolist()
     mesh.info = info(node)
     volume, com, inertia = mesh_volume_and_inertia(data)

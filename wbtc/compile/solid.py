@@ -29,11 +29,12 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller
+from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller, textures
 from wbtc.compile.context import KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.kinematic_drive import find_drive
 from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
+from wbtc.compile.texture_clamp import Clamp
 from wbtc.scene.model import Node, Scene
 
 _UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
@@ -138,12 +139,13 @@ class BodyBuilder:
         geom_node = shape.get("geometry")
         if not isinstance(geom_node, Node) or geom_node.base_type not in geometry.GEOMETRY_TYPES:
             return []
-        rgba, material, _ = appearance.shape_look(shape, self.ctx)
+        rgba, material, path = appearance.shape_look(shape, self.ctx)
         look = shape.get("appearance")
         transform = look.get("textureTransform") if isinstance(look, Node) else None
         made = geometry.add_geometry(body, geom_node, frame, self.ctx, collision=False, rgba=rgba,
                                      material=material, name=name,
-                                     texture_transform=transform if isinstance(transform, Node) else None)
+                                     texture_transform=transform if isinstance(transform, Node) else None,
+                                     texture_clamp=_texture_clamp(look, path))
         if made is None:
             return []
         return [made[0].name] if made[0].name else []
@@ -280,6 +282,19 @@ class BodyBuilder:
             for child in bounding.get("children") or []:
                 props += self._bounding(child, body, frame, solid)
         return props
+
+
+def _texture_clamp(look: object, path: str | None) -> Clamp | None:
+    """The axes the appearance's ImageTexture clamps (`repeatS`/`repeatT` FALSE), or None."""
+    if not isinstance(look, Node) or path is None:
+        return None
+    texture = look.get("baseColorMap" if look.base_type == "PBRAppearance" else "texture")
+    if not isinstance(texture, Node) or texture.base_type != "ImageTexture":
+        return None
+    if texture.get("repeatS") and texture.get("repeatT"):
+        return None
+    image = textures.load_texture(path)
+    return Clamp(not texture.get("repeatS"), not texture.get("repeatT"), image.width, image.height)
 
 
 def _world_frame(body: mujoco.MjsBody, frame: Frame, world: mujoco.MjsBody) -> Frame:
