@@ -18,7 +18,7 @@ Camera's entry gets its Recognition node's fields under `recognition`).
 
 A Solid with Physics starts with its `linearVelocity`/`angularVelocity` (the runtime sets them).
 
-Not honoured yet: Solid `immersionProperties`, `radarCrossSection`, `locked`, the initial velocity
+Not honoured yet: Solid `immersionProperties`, `locked`, the initial velocity
 of a Solid without Physics; Physics `damping` acts on the free joint only (see `damping`);
 Robot `battery`, `cpuConsumption`.
 Robot `selfCollision FALSE` (the default) excludes every pair of the robot's colliding bodies.
@@ -37,7 +37,7 @@ from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
 from wbtc.compile.texture_clamp import Clamp
 from wbtc.scene.model import Node, Scene
 
-_UNHONOURED = frozenset({"immersionProperties", "radarCrossSection", "locked", "battery"})
+_UNHONOURED = frozenset({"immersionProperties", "locked", "battery"})
 JOINT_TYPES = frozenset({"HingeJoint", "Hinge2Joint", "BallJoint", "SliderJoint"})
 
 
@@ -189,6 +189,9 @@ class BodyBuilder:
         ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy(), after))
         if node.def_name and node.def_name not in ctx.table.bodies:
             ctx.table.bodies[node.def_name] = body.name
+        cross_section = float(node.get("radarCrossSection") or 0.0)
+        if cross_section > 0:
+            ctx.table.radar_targets.append((body.name, cross_section))
         colors = plain(node.get("recognitionColors"))
         if colors:
             ctx.table.recognizable.append(Recognizable(node, body.name, [[float(c) for c in color] for color in colors],

@@ -138,6 +138,7 @@ class DeviceTable:
             after them (a quaternion: identity but for a library robot in a pre-R2022a world): what the
             supervisor needs to read and write a Solid's pose.
         recognizable: the Solids camera recognition can report, in scene order.
+        radar_targets: the bodies of Solids with a positive `radarCrossSection`, with it (m²).
         linear_damping: for each damped free joint (by name), the force per velocity of its tree's centre
             of mass (N·s/m): Webots damps a body's centre of mass, which a joint damping cannot do.
         gps_reference: WorldInfo.gpsReference (world axes, or latitude, longitude, altitude for WGS84).
@@ -158,6 +159,7 @@ class DeviceTable:
     linear_damping: dict[str, float] = field(default_factory=dict)
     solids: dict[int, tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=dict)
     recognizable: list[Recognizable] = field(default_factory=list)
+    radar_targets: list[tuple[str, float]] = field(default_factory=list)  # (body, radarCrossSection) of Solids
     initial_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
     gps_reference: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     gps_wgs84: bool = False

@@ -101,7 +101,7 @@ def targets(sim: Simulation) -> list[Target]:
     return out
 
 
-def _corners(model: mujoco.MjModel, data: mujoco.MjData, geom: int, origin: np.ndarray,
+def geom_corners(model: mujoco.MjModel, data: mujoco.MjData, geom: int, origin: np.ndarray,
              rot_t: np.ndarray) -> np.ndarray:
     """Eight points bounding one geom, in the camera frame."""
     centre = rot_t @ (data.geom_xpos[geom] - origin)
@@ -121,7 +121,7 @@ def _corners(model: mujoco.MjModel, data: mujoco.MjData, geom: int, origin: np.n
     return centre + local @ mat.T
 
 
-def _clip(points: np.ndarray, tan_x: float, tan_y: float) -> tuple[np.ndarray, np.ndarray] | None:
+def clip_to_view(points: np.ndarray, tan_x: float, tan_y: float) -> tuple[np.ndarray, np.ndarray] | None:
     """The box (min, max) of a geom's points once clipped to the view, or None if it is not in view.
 
     Points ahead of the camera outside a side plane are projected onto it (Webots' rule), points
@@ -196,7 +196,7 @@ def recognize(sim: Simulation, found: list[Target], origin: np.ndarray, rotation
             continue
         low = high = None
         for geom in target.geoms:
-            box = _clip(_corners(model, data, geom, origin, rot_t), tan_x, tan_y)
+            box = clip_to_view(geom_corners(model, data, geom, origin, rot_t), tan_x, tan_y)
             if box is None:
                 continue
             low = box[0] if low is None else np.minimum(low, box[0])

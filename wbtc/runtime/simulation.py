@@ -25,6 +25,7 @@ from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.offscreen import Offscreen
 from wbtc.runtime.propeller import PropellerMotor
+from wbtc.runtime.radar import Radar
 from wbtc.runtime.range_finder import RangeFinder
 from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
@@ -186,6 +187,8 @@ class Simulation:
             state.sensors[tag] = receiver
         elif dev.type == "Lidar":
             state.sensors[tag] = Lidar(dev, self, state.bodies)
+        elif dev.type == "Radar":
+            state.sensors[tag] = Radar(dev, self, state.bodies)
         elif dev.type == "RangeFinder" and dev.camera:
             state.sensors[tag] = RangeFinder(dev, self, state.bodies)
         elif dev.type in SENSOR_TYPES:
