@@ -655,6 +655,6 @@ def test_get_proto_climbs_the_chain_and_parent_parameters_are_read_only(sim) -> 
     assert out.splitlines() == ["Ball True Sphere3 False None", "4 2 True", "None None None"]
     assert err.splitlines() == [
         "Error: wb_supervisor_field_set_sf_float() called on a read-only PROTO internal field.",
-        "Error: wb_supervisor_proto_get_parameter() called with a NULL or empty 'name' argument.",
-        "Error: wb_supervisor_proto_get_parameter_by_index() called with a negative 'index' argument: -1.",
+        "Error: wb_supervisor_proto_get_field() called with a NULL or empty 'name' argument.",
+        "Error: wb_supervisor_proto_get_field_by_index() called with a negative 'index' argument: -1.",
     ]

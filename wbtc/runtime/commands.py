@@ -138,4 +138,7 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if robot.keys is not None:
         message["keys"] = robot.keys
         robot.keys = None
+    if robot.custom_data_pushed:
+        message["custom_data"] = robot.custom_data
+        robot.custom_data_pushed = False
     return message

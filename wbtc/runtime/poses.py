@@ -97,7 +97,7 @@ def world_pose(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | N
     body = solid_body(sim, node)
     if body is not None:
         to_world = sim.from_model
-        rot = to_world @ sim.data.xmat[body].reshape(3, 3) @ sim.to_model
+        rot = to_world @ sim.data.xmat[body].reshape(3, 3)  # the body frame is the Solid's own, turned into the model
         return rot, to_world @ sim.data.xpos[body]
     parent = parent_of(node)
     rot, pos = (np.eye(3), np.zeros(3)) if parent is None else world_pose(sim, parent, parent_of)

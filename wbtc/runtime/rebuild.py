@@ -87,7 +87,7 @@ def _carry_driven_poses(sim: Simulation, old_model: mujoco.MjModel, old_robots: 
 
 def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:
     """Give a robot's new device objects the state of the old ones (same tags: same devices)."""
-    new.custom_data = old.custom_data
+    new.custom_data, new.custom_data_pushed = old.custom_data, old.custom_data_pushed
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
     if keep_motion:
         new.distance = old.distance

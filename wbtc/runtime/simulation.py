@@ -49,6 +49,7 @@ class RobotState:
     keyboard_due: float = math.inf
     keys: list[int] | None = None
     custom_data: str = ""
+    custom_data_pushed: bool = False  # a supervisor wrote customData: the next reply tells the controller
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
 

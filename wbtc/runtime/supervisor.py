@@ -348,6 +348,8 @@ class SupervisorHub:
                 scene_ops.store_pose(ref.node, ref.name, to_typed(ref.type, value))
                 return
             scene_ops.set_value(tree, ref, index, value)
+            if ref.name == "customData" and ref.node.is_a("Robot"):
+                self._push_custom_data(ref.node, str(value))
         elif op == "insert":
             scene_ops.insert_value(tree, ref, int(args[0]), args[1])
         elif op == "remove":
@@ -364,6 +366,13 @@ class SupervisorHub:
         else:
             raise SupervisorError(f"Warning: field {op}() is not supported by wbtc yet; ignored.")
         dirty.add(owner)
+
+    def _push_custom_data(self, node: Node, data: str) -> None:
+        """A robot whose customData a supervisor wrote reads it from its next step (Webots' getCustomData)."""
+        for robot in self.sim.robots:
+            if robot.entry.node is node:
+                robot.custom_data = data
+                robot.custom_data_pushed = True
 
     # -- recompiling ------------------------------------------------------------------------------
     def _recompile(self, dirty: set[int]) -> None:

@@ -174,6 +174,8 @@ class Session:
             self.keys = [int(k) for k in keys[:MAX_KEYS]]
         if reply.get("battery") is not None:
             self.battery_value = float(reply["battery"])
+        if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
+            self.custom_data = str(reply["custom_data"])
 
     def _play_motions(self, duration: int) -> None:
         if duration <= 0 or not self.motions:

@@ -1,8 +1,10 @@
 """``Proto``: the PROTO a node is an instance of (Webots R2023b+ ``Node.getProto()``).
 
-A PROTO whose body is an instance of another PROTO is *derived*; ``getProtoParent()`` climbs that
-chain. The parameters of the node's own PROTO are its interface fields (the ``Field`` objects
-``Node.getField`` gives); those of a parent PROTO are the values the derived PROTO gave it, read-only.
+A PROTO whose body is an instance of another PROTO is *derived*; ``getParent()`` climbs that chain.
+The fields of the node's own PROTO are its interface fields (the ``Field`` objects ``Node.getField``
+gives); those of a parent PROTO are the values the derived PROTO gave it, read-only. The names of
+Webots' released API (``getParent``, ``getField``, ``getFieldByIndex``, ``getNumberOfFields``) and
+the earlier ones (``getProtoParent``, ``getParameter``...) both work.
 """
 
 from __future__ import annotations
@@ -39,32 +41,37 @@ class Proto:
         """Whether this PROTO's body is an instance of another PROTO."""
         return self._level < len(self._names)
 
-    def getParameter(self, name: str) -> Field | None:
-        """The parameter (interface field) with that name, or None."""
+    def getField(self, name: str) -> Field | None:
+        """The field (interface parameter) with that name, or None."""
         from .field import Field
 
-        function = "wb_supervisor_proto_get_parameter"
+        function = "wb_supervisor_proto_get_field"
         if not name:
             _session.error(f"Error: {function}() called with a NULL or empty 'name' argument.")
             return None
         ref = self._call("proto.getParameter", str(name), function=function)
         return Field._from_ref(ref, read_only=self._level > 1)
 
-    def getParameterByIndex(self, index: int) -> Field | None:
-        """The parameter at ``index`` in the PROTO's interface order, or None."""
+    def getFieldByIndex(self, index: int) -> Field | None:
+        """The field at ``index`` in the PROTO's interface order, or None."""
         from .field import Field
 
-        function = "wb_supervisor_proto_get_parameter_by_index"
+        function = "wb_supervisor_proto_get_field_by_index"
         if index < 0:
             _session.error(f"Error: {function}() called with a negative 'index' argument: {index}.")
             return None
         ref = self._call("proto.getParameterByIndex", int(index), function=function)
         return Field._from_ref(ref, read_only=self._level > 1)
 
-    def getNumberOfParameters(self) -> int:
-        """How many parameters the PROTO declares."""
-        count = self._call("proto.getNumberOfParameters", function="wb_supervisor_proto_get_number_of_parameters")
+    def getNumberOfFields(self) -> int:
+        """How many fields (parameters) the PROTO declares."""
+        count = self._call("proto.getNumberOfParameters", function="wb_supervisor_proto_get_number_of_fields")
         return int(count) if count is not None else -1
+
+    getParent = getProtoParent
+    getParameter = getField
+    getParameterByIndex = getFieldByIndex
+    getNumberOfParameters = getNumberOfFields
 
     @property
     def type_name(self) -> str:
@@ -72,6 +79,8 @@ class Proto:
         return self.getTypeName()
 
     @property
-    def number_of_parameters(self) -> int:
-        """How many parameters the PROTO declares."""
-        return self.getNumberOfParameters()
+    def number_of_fields(self) -> int:
+        """How many fields the PROTO declares."""
+        return self.getNumberOfFields()
+
+    number_of_parameters = number_of_fields
