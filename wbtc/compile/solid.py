@@ -167,13 +167,6 @@ class BodyBuilder:
         """
         ctx = self.ctx
         ctx.unhonoured(node, _UNHONOURED)
-        if (isinstance(node.get("physics"), Node) and not dynamic and joint_frame is None
-                and parent is not ctx.spec.worldbody):
-            # Webots: a Solid with Physics none of whose ancestors has Physics moves on its own (a
-            # ball left on a static table falls). MuJoCo frees only children of the world: the body
-            # goes there, at its world pose, and its frame stays the one its fields are written in.
-            frame = _world_frame(parent, frame, ctx.spec.worldbody)
-            parent = ctx.spec.worldbody
         pose = frame.compose(np.asarray(node.get("translation"), dtype=float), pose_quat(node))
         turn = legacy_protos.root_turn(ctx, node, robot)
         after = turn if turn is not None else legacy_protos.identity()
@@ -298,19 +291,6 @@ def _texture_clamp(look: object, path: str | None) -> Clamp | None:
         return None
     image = textures.load_texture(path)
     return Clamp(not texture.get("repeatS"), not texture.get("repeatT"), image.width, image.height)
-
-
-def _world_frame(body: mujoco.MjsBody, frame: Frame, world: mujoco.MjsBody) -> Frame:
-    """`frame` (written in `body`) in the world body's frame, through `body`'s static ancestors."""
-    chain = []
-    while body != world and body.parent is not None:
-        chain.append(body)
-        body = body.parent
-    placed = Frame.identity()
-    for ancestor in reversed(chain):
-        placed = placed.compose(np.asarray(ancestor.pos, dtype=float), np.asarray(ancestor.quat, dtype=float))
-    placed = placed.compose(frame.pos, frame.quat)
-    return Frame(placed.pos, placed.quat, frame.scale)
 
 
 def _exclude_self_collisions(robot: mujoco.MjsBody, ctx: CompileContext) -> None:
