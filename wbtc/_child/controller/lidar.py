@@ -83,7 +83,12 @@ class Lidar(Sensor):
     @checked("get_point_cloud", [])
     def getPointCloud(self) -> list[LidarPoint]:
         """Every point of the last scan (point cloud must be enabled)."""
-        return list(self._s.points) if self._cloud("wb_lidar_get_point_cloud") else []
+        if not self._cloud("wb_lidar_get_point_cloud"):
+            return []
+        if not self._s.points:  # before the first sample: the zero-filled memory Webots hands out
+            count, width = self._s.resolution * self._s.layers, self._s.resolution
+            return [LidarPoint(0.0, 0.0, 0.0, i // width, 0.0) for i in range(count)]
+        return list(self._s.points)
 
     @checked("get_layer_point_cloud", [])
     def getLayerPointCloud(self, layer: int) -> list[LidarPoint]:
