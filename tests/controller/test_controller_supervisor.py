@@ -465,20 +465,23 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         """,
         SUPERVISOR,
     )
-    assert fake.step() == (32, [
+    # worldSave and animationStopRecording take effect at once, as in Webots: each flushes the buffered commands.
+    fake.answer("flush", [
         (-1, "simulationSetMode", 2),
         (-1, "simulationReset"),
         (-1, "simulationResetPhysics"),
         (-1, "worldReload"),
         (-1, "worldSave", None),
-        (-1, "worldSave", str(tmp_path / "copy.wbt")),
+    ])
+    fake.answer("flush", [(-1, "worldSave", str(tmp_path / "copy.wbt"))])
+    fake.answer("flush", [
         (-1, "exportImage", str(tmp_path / "shot.png"), 90),
         (-1, "movieStartRecording", str(tmp_path / "film.mp4"), 640, 480, 0, 80, 1, False),
         (-1, "movieStopRecording"),
         (-1, "animationStartRecording", str(tmp_path / "anim.html")),
         (-1, "animationStopRecording"),
-        (-1, "worldLoad", str(tmp_path / "other.wbt")),
     ])
+    assert fake.step() == (32, [(-1, "worldLoad", str(tmp_path / "other.wbt"))])
     fake.answer("simulationGetMode", result=0)
     rc, out, err = fake.finish()
     assert rc == 0

@@ -180,7 +180,7 @@ class Supervisor(Robot):
         session.queue(ROBOT_TAG, "worldLoad", os.path.abspath(filename))
 
     def worldSave(self, filename: str | None = None) -> bool:
-        """Save the world (over its own file without a name) at the next step."""
+        """Save the world (over its own file without a name) now."""
         function = "wb_supervisor_world_save"
         session = self._allowed(function)
         if session is None:
@@ -189,6 +189,7 @@ class Supervisor(Robot):
             _error(f"Error: the target file given to {function}() should have the '.wbt' extension.")
             return False
         session.queue(ROBOT_TAG, "worldSave", os.path.abspath(filename) if filename else None)
+        session.flush(function)  # Webots writes the file before returning
         return True
 
     def worldReload(self) -> None:
@@ -281,11 +282,12 @@ class Supervisor(Robot):
         return True
 
     def animationStopRecording(self) -> bool:
-        """Stop recording the animation (sent with the next step)."""
+        """Stop recording the animation and write its page now."""
         session = self._allowed("wb_supervisor_animation_stop_recording")
         if session is None:
             return False
         session.queue(ROBOT_TAG, "animationStopRecording")
+        session.flush("wb_supervisor_animation_stop_recording")  # Webots writes the page before returning
         return True
 
     # -- virtual reality headset -------------------------------------------------------------------------------
