@@ -1,8 +1,7 @@
 """Port of Webots' tests/physics/controllers/distance_sensor_rays: generic and infra-red sensors see a static and a
-falling box at the right distance, step after step.
-
-Only the robot named "static" is ported: the "dynamic" one drives with the DifferentialWheels API, which Webots'
-Python API no longer has.
+falling box at the right distance, step after step, whether the sensors stand still (the robot named "static") or are
+driven by wheels during the physics step (the "dynamic" robot, which turns its "left motor" and "right motor" at
+20 rad/s as the stored dynamic_distance_sensor_rays world and the motor version of the C controller do).
 """
 
 import sys
@@ -36,7 +35,12 @@ for sensor in (ds_generic_s, ds_infra_red_s, ds_generic_d, ds_infra_red_d):
 robot.step(3 * time_step)
 
 if dynamic:
-    raise SystemExit("the dynamic variant needs wb_differential_wheels_set_speed, which is not ported")
+    left_motor = robot.getDevice("left motor")
+    right_motor = robot.getDevice("right motor")
+    left_motor.setPosition(float("inf"))
+    right_motor.setPosition(float("inf"))
+    left_motor.setVelocity(20)
+    right_motor.setVelocity(20)
 
 # static object: generic (using ODE rays), infra-red (using Webots ray collision detection)
 check_sensor_value(ds_generic_s, OBJ_VALUE, "The generic distance sensor doesn't return the correct initial distance of "
