@@ -271,11 +271,25 @@ class TouchSensor(Sensor):
             return 1.0 if touched else 0.0
         if not self.has_physics:
             total[:] = 0.0
+        else:
+            # Webots reads the force in the fixed joint between the sensor's body and its parent: the
+            # contacts' force, less what the sensor's own mass takes of it, m (a - g) (at rest, a
+            # sensor under its robot reads the robot's weight, not the robot's and its own).
+            total -= model.body_mass[self.body] * (self._acceleration(sim) - model.opt.gravity)
         _, mat = self.frame(sim)
         local = mat.T @ total
         if self.kind == "force":
             return apply(self.table, max(0.0, -float(local[0])), sim.noise_rng, self.resolution)
         return [apply(self.table, float(c), sim.noise_rng, self.resolution) for c in local]
+
+
+    def _acceleration(self, sim: Simulation) -> np.ndarray:
+        """The linear acceleration of the sensor body's centre of mass (world frame)."""
+        mujoco.mj_rnePostConstraint(sim.model, sim.data)
+        mujoco.mj_objectAcceleration(sim.model, sim.data, mujoco.mjtObj.mjOBJ_XBODY, self.body, self._force, 0)
+        # cacc is the spatial acceleration of the body frame, gravity included as an upward
+        # acceleration of the world (MuJoCo's convention): take it back out.
+        return np.array(self._force[3:]) + sim.model.opt.gravity
 
 
 class LightSensor(Sensor):
