@@ -1,4 +1,5 @@
-"""Supervisor node calls as Webots answers them: no pose for nodes that are not poses, every imported node."""
+"""Supervisor node calls as Webots answers them: no pose for nodes that are not poses, every imported node,
+device tags counted from the robot itself."""
 
 import math
 from pathlib import Path
@@ -26,6 +27,10 @@ DEF BOX Solid {
 DEF GROUP Group {
 }
 Robot {
+  children [
+    GPS {
+    }
+  ]
   controller "probe"
   supervisor TRUE
 }
@@ -43,6 +48,7 @@ children.importMFNodeFromString(-1, 'Solid { name "a" } Solid { name "b" }')
 children.importMFNodeFromString(0, 'Pose { }')
 print("imported", children.getCount(), [children.getMFNode(i).getTypeName() for i in range(children.getCount())])
 print("names", [children.getMFNode(i).getField("name").getSFString() for i in (1, 2)])
+print("tags", s.getFromDevice(0) == s.getSelf(), s.getFromDevice(1).getTypeName())
 """
 
 
@@ -61,3 +67,4 @@ def test_poses_of_non_pose_nodes_are_nan_and_every_imported_node_is_added(tmp_pa
     assert lines["orientation"] == "orientation nan True True"
     assert lines["imported"] == "imported 3 ['Pose', 'Solid', 'Solid']"
     assert lines["names"] == "names ['a', 'b']"
+    assert lines["tags"] == "tags True GPS"  # Webots' tags: 0 is the robot itself, 1 its first device

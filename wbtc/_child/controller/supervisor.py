@@ -85,12 +85,18 @@ class Supervisor(Robot):
         return _from_id(int(id), function)
 
     def getFromDevice(self, tag: Device | int) -> Node | None:
-        """The node of a device of this robot (a device object, or its tag), or None."""
+        """The node of a device of this robot (a device object, or Webots' tag: 0 the robot, 1... its devices)."""
         function = "wb_supervisor_node_get_from_device"
         session = self._allowed(function)
         if session is None:
             return None
-        number = getattr(tag, "_tag", tag)
+        if isinstance(tag, int) and not isinstance(tag, bool):
+            # A raw tag counts as Webots' do: 0 is the robot itself, its devices follow from 1.
+            if tag == 0:
+                return self.getSelf()
+            number = tag - 1
+        else:
+            number = getattr(tag, "_tag", tag)
         if not isinstance(number, int) or not 0 <= number < len(session.states):
             _error(f"Error: {function}() called with an invalid 'tag' argument.")
             return None
