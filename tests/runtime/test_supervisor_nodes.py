@@ -26,6 +26,16 @@ DEF BOX Solid {
 }
 DEF GROUP Group {
 }
+DEF MOVER Solid {
+  translation 0 2 0
+  children [
+    DEF CHILD Solid {
+      translation 0 0.5 0
+      name "child"
+    }
+  ]
+  name "mover"
+}
 Robot {
   children [
     GPS {
@@ -49,6 +59,9 @@ children.importMFNodeFromString(0, 'Pose { }')
 print("imported", children.getCount(), [children.getMFNode(i).getTypeName() for i in range(children.getCount())])
 print("names", [children.getMFNode(i).getField("name").getSFString() for i in (1, 2)])
 print("tags", s.getFromDevice(0) == s.getSelf(), s.getFromDevice(1).getTypeName())
+s.getFromDef("MOVER").setVelocity([1, 0, 0, 0, 0, 2])
+s.step(32)
+print("child", [round(v, 6) for v in s.getFromDef("CHILD").getVelocity()])
 """
 
 
@@ -68,3 +81,7 @@ def test_poses_of_non_pose_nodes_are_nan_and_every_imported_node_is_added(tmp_pa
     assert lines["imported"] == "imported 3 ['Pose', 'Solid', 'Solid']"
     assert lines["names"] == "names ['a', 'b']"
     assert lines["tags"] == "tags True GPS"  # Webots' tags: 0 is the robot itself, 1 its first device
+    # A child of a Solid a supervisor moves kinematically moves with it: v = v0 + w x r, r = 0.5 m along the
+    # mover's y, turned by 2 rad/s x 32 ms: (1 - cos 0.064, -sin 0.064, 0).
+    velocity = [float(v) for v in lines["child"][len("child ["):-1].split(", ")]
+    assert velocity == [round(1 - math.cos(0.064), 6), round(-math.sin(0.064), 6), 0.0, 0.0, 0.0, 2.0]

@@ -129,8 +129,13 @@ def velocity(sim: Simulation, node: Node, parent_of: Callable[[Node], Node | Non
         body = solid_body(sim, ancestor) if ancestor is not None else None
     if body is None:
         return [0.0] * 6
-    if body in sim.kinematic:
-        lin, ang = sim.kinematic[body]
+    moved = body
+    while moved > 0 and moved not in sim.kinematic and sim.model.body_dofnum[moved] == 0:
+        moved = int(sim.model.body_parentid[moved])
+    if moved in sim.kinematic:
+        # Moved by a supervisor's setVelocity, itself or with the static ancestor that is: a rigid motion.
+        lin, ang = sim.kinematic[moved]
+        lin = lin + np.cross(ang, sim.data.xpos[body] - sim.data.xpos[moved])
         return [float(v) for v in (*(sim.from_model @ lin), *(sim.from_model @ ang))]
     res = np.zeros(6)
     mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_BODY, body, res, 0)
