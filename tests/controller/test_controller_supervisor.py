@@ -446,6 +446,7 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         supervisor.movieStartRecording("film.mp4", 640, 480, 0, 80, 1, False)
         supervisor.movieStopRecording()
         supervisor.movieStartRecording("film.mp4", 0, 480, 0, 80, 1, False)
+        supervisor.movieStartRecording("film.mp4", 0, 480, 0, 80, 1, False)
         supervisor.movieStartRecording("film.mp4", 640, 480, 0, 101, 1, False)
         supervisor.movieStartRecording("film.mp4", 640, 480, 0, 80, 0, False)
         print(supervisor.animationStartRecording("anim.html"), supervisor.animationStartRecording("anim.json"))
@@ -474,10 +475,13 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         (-1, "worldSave", None),
     ])
     fake.answer("flush", [(-1, "worldSave", str(tmp_path / "copy.wbt"))])
+    # The movie stopped is being encoded: the next movie call finds it not ready, which writes it.
     fake.answer("flush", [
         (-1, "exportImage", str(tmp_path / "shot.png"), 90),
         (-1, "movieStartRecording", str(tmp_path / "film.mp4"), 640, 480, 0, 80, 1, False),
         (-1, "movieStopRecording"),
+    ])
+    fake.answer("flush", [
         (-1, "animationStartRecording", str(tmp_path / "anim.html")),
         (-1, "animationStopRecording"),
     ])
@@ -499,6 +503,7 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         "Error: the target file given to wb_supervisor_world_save() should have the '.wbt' extension.",
         "Error: wb_supervisor_export_image(): 'quality' argument (0) must be between 1 and 100.",
         "Error: wb_supervisor_export_image() called with NULL or empty 'filename' argument.",
+        "Error: wb_supervisor_movie_start_recording(): movie recording has already been started.",
         "Error: wb_supervisor_movie_start_recording(): movie recording has already been started.",
         "Error: wb_supervisor_movie_start_recording(): 'width' and 'height' arguments must be postitive.",
         "Error: wb_supervisor_movie_start_recording(): 'quality' argument (101) must be between 1 and 100.",

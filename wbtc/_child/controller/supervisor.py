@@ -249,15 +249,22 @@ class Supervisor(Robot):
         session.movie_status = Supervisor.MOVIE_RECORDING
 
     def movieStopRecording(self) -> None:
-        """Stop recording the movie (sent with the next step)."""
+        """Stop recording the movie (sent with the next step, or written when movieIsReady is asked)."""
         session = self._allowed("wb_supervisor_movie_stop_recording")
         if session is not None:
             session.queue(ROBOT_TAG, "movieStopRecording")
-            session.movie_status = Supervisor.MOVIE_READY
+            session.movie_status = Supervisor.MOVIE_SAVING
 
     @staticmethod
     def _movie_ready() -> bool:
-        status = _session.require().movie_status
+        session = _session.require()
+        status = session.movie_status
+        if status == Supervisor.MOVIE_SAVING:
+            # As Webots, a stopped movie is being encoded when first asked about: the simulator writes the
+            # file now, and the movie is ready from the next question on.
+            if session.flush("wb_supervisor_movie_is_ready"):
+                session.movie_status = Supervisor.MOVIE_READY
+            return False
         return status == Supervisor.MOVIE_READY or status > Supervisor.MOVIE_SAVING
 
     def movieIsReady(self) -> bool:
