@@ -62,21 +62,21 @@ def test_missing_world_exits_1(tmp_path: Path) -> None:
 
 
 def test_unhonoured_field_warns_and_still_compiles(tmp_path: Path) -> None:
-    world = WORLDS / "radar_cross_section.wbt"
-    out = tmp_path / "radar.xml"
+    world = WORLDS / "locked_solid.wbt"
+    out = tmp_path / "locked.xml"
     result = runner.invoke(app, ["compile", str(world), "-o", str(out)])
     assert result.exit_code == 0, result.output
     assert result.stderr.splitlines()[0] == (
-        f"{world}:8:3: warning: Solid.radarCrossSection is not honoured by wbtc yet; it is ignored")
+        f"{world}:8:3: warning: Solid.locked is not honoured by wbtc yet; it is ignored")
     assert out.is_file()
 
 
 def test_strict_turns_an_unhonoured_field_into_an_error(tmp_path: Path) -> None:
-    world = WORLDS / "radar_cross_section.wbt"
-    out = tmp_path / "radar.xml"
+    world = WORLDS / "locked_solid.wbt"
+    out = tmp_path / "locked.xml"
     result = runner.invoke(app, ["compile", str(world), "-o", str(out), "--strict"])
     assert result.exit_code == 1
     assert result.stderr.splitlines()[0] == (
-        f"{world}:8:3: error: Solid.radarCrossSection is not honoured by wbtc yet; it is ignored")
+        f"{world}:8:3: error: Solid.locked is not honoured by wbtc yet; it is ignored")
     assert result.stdout == ""
     assert list(tmp_path.iterdir()) == []
