@@ -11,16 +11,16 @@ target, as WbRadar computes:
 - received power: the radar equation, Pt·G²·λ²·σ / ((4π)³·d⁴) with Pt = `transmittedPower` (dBm),
   G = `antennaGain` (dBi), λ = c / `frequency` (GHz), σ = the cross section; below
   `minDetectableSignal` (dBm) the target is lost; reported in dBm;
-- speed: the radial speed (positive away from the radar) of the target relative to the radar, plus
-  `speedNoise`, filtered by `minRadialSpeed`/`maxRadialSpeed` and `minAbsoluteRadialSpeed`;
+- speed: the radial speed (positive away from the radar) of the target relative to the radar, both
+  velocities measured from their positions at the last sample (0 at the first), plus `speedNoise`,
+  filtered by `minRadialSpeed`/`maxRadialSpeed` and `minAbsoluteRadialSpeed`;
 - azimuth: the horizontal angle, positive to the radar's right (Webots' sign), clamped to the field of
   view, plus `angularNoise`.
 
 Targets closer to each other than `cellDistance` (and `cellSpeed`, when set) merge into one, their
 values averaged with the received powers as weights, as WbRadar::mergeTargets.
 
-Not honoured yet: speeds measured as Webots does, from the positions at two samples (the bodies'
-velocities are used), and targets without a bounding object (Webots uses their bounding sphere).
+A target without bounding objects is seen through its shapes (Webots uses their bounding sphere).
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ from typing import TYPE_CHECKING, Any
 import mujoco
 import numpy as np
 
-from wbtc.compile.context import COLLISION_GROUP
+from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.recognition import clip_to_view, geom_corners
 from wbtc.runtime.sensors import Sensor
@@ -73,7 +73,9 @@ class Radar(Sensor):
                              / (4.0 * math.pi) ** 3)
         self.threshold = _dbm_to_watts(float(f.get("minDetectableSignal", -100.0)))
         self._targets: tuple[Any, list[tuple[int, float, float]]] = (None, [])
-        self._velocity = np.zeros(6)
+        self._previous: dict[int, np.ndarray] = {}  # the targets' positions at the last sample
+        self._last_radar = np.zeros(3)
+        self._last_time: float | None = None
 
     def _target_bodies(self, sim: Simulation) -> list[tuple[int, float, frozenset[int], list[int]]]:
         """(body, cross section, the bodies below it, their collision geoms) of every target, per model."""
@@ -83,9 +85,11 @@ class Radar(Sensor):
             for name, cross_section in sim.table.radar_targets:
                 body = model.body(name).id
                 below = frozenset(b for b in range(model.nbody) if b == body or _descends(model, b, body))
-                geoms = [g for g in range(model.ngeom) if int(model.geom_bodyid[g]) in below
-                         and model.geom_group[g] == COLLISION_GROUP
-                         and model.geom_type[g] != mujoco.mjtGeom.mjGEOM_PLANE]
+                mine = [g for g in range(model.ngeom) if int(model.geom_bodyid[g]) in below
+                        and model.geom_type[g] != mujoco.mjtGeom.mjGEOM_PLANE]
+                # Its bounding objects; without any, its shapes (Webots then uses their bounding sphere).
+                geoms = [g for g in mine if model.geom_group[g] == COLLISION_GROUP] or \
+                    [g for g in mine if model.geom_group[g] == VISUAL_GROUP]
                 found.append((body, cross_section, below, geoms))
             self._targets = (model, found)
         return self._targets[1]
@@ -112,7 +116,13 @@ class Radar(Sensor):
         """The targets seen now."""
         pos, mat = self.frame(sim)
         rng = sim.noise_rng
-        radar_velocity = self._body_velocity(sim, self.body)
+        # Speeds as WbRadar measures them: positions now against the last sample's, over the time between.
+        elapsed = (sim.time_ms - self._last_time) / 1000.0 if self._last_time is not None else 0.0
+        radar_velocity = (pos - self._last_radar) / elapsed if elapsed > 0 else np.zeros(3)
+        previous, self._previous = self._previous, {}
+        for body, *_ in self._target_bodies(sim):
+            self._previous[body] = np.array(sim.data.xpos[body])
+        self._last_radar, self._last_time = np.array(pos), sim.time_ms
         targets = []
         for body, cross_section, below, geoms in self._target_bodies(sim):
             if body == self.body or not geoms:
@@ -135,7 +145,9 @@ class Radar(Sensor):
             power = self.power_factor * cross_section / distance ** 4
             if power < self.threshold:
                 continue
-            relative = self._body_velocity(sim, body) - radar_velocity
+            target_velocity = (sim.data.xpos[body] - previous[body]) / elapsed if body in previous and elapsed > 0 \
+                else np.zeros(3)
+            relative = target_velocity - radar_velocity
             norm = float(np.linalg.norm(world))
             speed = float(np.dot(world / norm, relative)) if norm > 0 else 0.0
             if rng is not None and self.noise[1] > 0:
@@ -161,10 +173,6 @@ class Radar(Sensor):
             return False
         hit, _ = sim.rays.cast(pos, world / length, length, False, self.skip_bodies | target)
         return math.isfinite(hit) and length - hit > depth / 2
-
-    def _body_velocity(self, sim: Simulation, body: int) -> np.ndarray:
-        mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_XBODY, body, self._velocity, 0)
-        return np.array(self._velocity[3:])
 
 
 #: Geometries WbObjectDetection tests by their centre's distance to the frustum's planes.
