@@ -26,3 +26,13 @@ def simulation_of(folder: Path, text: str, name: str = "world.wbt"):
     world.write_text(text, encoding="utf-8")
     result, _ = compile_world(world)
     return Simulation(result, noise=False)
+
+
+def project_with_controller(folder: Path, world: str, world_text: str, controller: str, code: str) -> Path:
+    """A Webots project in `folder`: worlds/`world` holding `world_text`, controllers/`controller`/ its code."""
+    (folder / "controllers" / controller).mkdir(parents=True)
+    (folder / "controllers" / controller / f"{controller}.py").write_text(code, encoding="utf-8")
+    (folder / "worlds").mkdir()
+    path = folder / "worlds" / world
+    path.write_text(world_text, encoding="utf-8")
+    return path

@@ -5,6 +5,7 @@ import math
 from pathlib import Path
 
 import pytest
+from conftest import project_with_controller
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -35,12 +36,7 @@ while robot.step() != -1:
 
 
 def _world(tmp_path: Path) -> Path:
-    (tmp_path / "controllers" / "climb").mkdir(parents=True)
-    (tmp_path / "controllers" / "climb" / "climb.py").write_text(CONTROLLER)
-    (tmp_path / "worlds").mkdir()
-    world = tmp_path / "worlds" / "crazyflie.wbt"
-    world.write_text(WORLD)
-    return world
+    return project_with_controller(tmp_path, "crazyflie.wbt", WORLD, "climb", CONTROLLER)
 
 
 def test_devices_in_webots_order_and_the_mass(tmp_path):

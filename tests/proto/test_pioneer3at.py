@@ -4,6 +4,7 @@ import json
 from pathlib import Path
 
 import pytest
+from conftest import project_with_controller
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -33,12 +34,7 @@ while robot.step() != -1:
 
 
 def _world(tmp_path: Path) -> Path:
-    (tmp_path / "controllers" / "forward").mkdir(parents=True)
-    (tmp_path / "controllers" / "forward" / "forward.py").write_text(CONTROLLER)
-    (tmp_path / "worlds").mkdir()
-    world = tmp_path / "worlds" / "pioneer3at.wbt"
-    world.write_text(WORLD)
-    return world
+    return project_with_controller(tmp_path, "pioneer3at.wbt", WORLD, "forward", CONTROLLER)
 
 
 def test_devices_in_webots_order_and_the_mass(tmp_path):

@@ -3,6 +3,7 @@
 import math
 from pathlib import Path
 
+from conftest import project_with_controller
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -47,11 +48,8 @@ print("saved", rf.saveImage("depth.hdr", 100))
 
 
 def test_a_range_finder_sees_the_wall_at_its_planar_depth(tmp_path: Path):
-    (tmp_path / "controllers" / "probe").mkdir(parents=True)
-    (tmp_path / "controllers" / "probe" / "probe.py").write_text(PROBE)
-    (tmp_path / "worlds").mkdir()
-    (tmp_path / "worlds" / "w.wbt").write_text(WORLD)
-    result = CliRunner().invoke(app, ["run", str(tmp_path / "worlds" / "w.wbt"), "--headless", "--duration", "0.05"])
+    world = project_with_controller(tmp_path, "w.wbt", WORLD, "probe", PROBE)
+    result = CliRunner().invoke(app, ["run", str(world), "--headless", "--duration", "0.05"])
     assert result.exit_code == 0, result.output
     out = {line.split()[1]: line.split()[2:] for line in result.output.splitlines() if line.startswith("[robot] ")}
     assert math.isnan(float(out["before"][0]))

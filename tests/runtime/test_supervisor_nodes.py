@@ -4,6 +4,7 @@ device tags counted from the robot itself."""
 import math
 from pathlib import Path
 
+from conftest import project_with_controller
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -66,11 +67,8 @@ print("child", [round(v, 6) for v in s.getFromDef("CHILD").getVelocity()])
 
 
 def test_poses_of_non_pose_nodes_are_nan_and_every_imported_node_is_added(tmp_path: Path):
-    (tmp_path / "controllers" / "probe").mkdir(parents=True)
-    (tmp_path / "controllers" / "probe" / "probe.py").write_text(PROBE)
-    (tmp_path / "worlds").mkdir()
-    (tmp_path / "worlds" / "w.wbt").write_text(WORLD)
-    result = CliRunner().invoke(app, ["run", str(tmp_path / "worlds" / "w.wbt"), "--headless", "--duration", "0.1"])
+    world = project_with_controller(tmp_path, "w.wbt", WORLD, "probe", PROBE)
+    result = CliRunner().invoke(app, ["run", str(world), "--headless", "--duration", "0.1"])
     assert result.exit_code == 0, result.output
     lines = {line.split("] ", 1)[1].split(" ", 1)[0]: line.split("] ", 1)[1] for line in result.output.splitlines()
              if line.startswith("[robot] ")}
