@@ -19,7 +19,7 @@ import hashlib
 import mujoco
 import numpy as np
 
-from wbtc.compile import textures
+from wbtc.compile import display_texture, textures
 from wbtc.compile.context import CompileContext, info
 from wbtc.scene.model import Node
 
@@ -48,6 +48,12 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
         if path is None and urls:
             ctx.warn(f"the texture {urls[0]!r} cannot be found; the shape keeps its plain colour",
                      texture_node.span)
+    shown = display_texture.display_texture(ctx, texture_node, path) if isinstance(texture_node, Node) else None
+    if shown is not None:
+        # A Display draws on this texture: a texture of its own at the display's size (no clamp, no file).
+        name = _material(ctx, rgba, emission, specular, shininess, None, _texture_repeat(appearance), appearance,
+                         texture=shown)
+        return np.array([1.0, 1.0, 1.0, rgba[3]]), name, None
     if path is None and emission == 0.0:
         return rgba, None, None
     geometry_node = shape.get("geometry")
@@ -102,19 +108,21 @@ def _texture_repeat(appearance: Node) -> tuple[float, float]:
 
 
 def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: float, shininess: float,
-              path: str | None, repeat: tuple[float, float], node: Node) -> str:
-    key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat))
+              path: str | None, repeat: tuple[float, float], node: Node, texture: str | None = None) -> str:
+    key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat)) + (f"|{texture}" if texture else "")
     name = "mat_" + hashlib.sha1(key.encode()).hexdigest()[:10]
     if ctx.spec.material(name) is not None:
         return name
     material = ctx.spec.add_material(name=name)
-    material.rgba = rgba if path is None else [1.0, 1.0, 1.0, rgba[3]]
+    material.rgba = rgba if path is None and texture is None else [1.0, 1.0, 1.0, rgba[3]]
     material.emission = emission
     material.specular = specular
     material.shininess = shininess
     material.texrepeat = list(repeat)
     material.info = info(node)
-    if path is not None:
+    if texture is not None:
+        material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = texture
+    elif path is not None:
         material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = _texture(ctx, path)
     return name
 

@@ -52,6 +52,7 @@ class CompileContext:
     default_damping: Node | None = None
     damped: list[tuple[str, float, float]] = field(default_factory=list)  # free joint, linear and angular rates
     texture_paths: dict[str, str] = field(default_factory=dict)
+    display_textures: dict[int, object] = field(default_factory=dict)  # id(ImageTexture) -> its Display's entry
     led_lights: list[tuple[str, float, float]] | None = None  # collects an LED's lights while its children are walked
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
-from wbtc.compile import legacy_protos
+from wbtc.compile import display_texture, legacy_protos
 from wbtc.compile.context import VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import Frame, mat_to_quat, quat_mul
 from wbtc.compile.table import DeviceEntry, RobotEntry, plain_fields
@@ -110,6 +110,8 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
         # The controller reads the Recognition node's fields (plain_fields leaves node fields out).
         recognition = node.get("recognition")
         entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
+    if kind == "Display":
+        display_texture.register(node, entry, ctx)
     robot.devices.append(entry)
     return entry
 

@@ -39,6 +39,7 @@ class DeviceEntry:
         axis: which axis of a multi-axis joint (1, 2, 3).
         propeller: for a Propeller's motor: its shaft axis in its site's frame ("axis") and its
             thrust and torque constants ("thrust", "torque"); the site is its center of thrust.
+        textures: for a Display, the MuJoCo textures that show its image.
     """
 
     name: str
@@ -57,6 +58,7 @@ class DeviceEntry:
     initial_position: float = 0.0
     axis: int = 1
     propeller: dict[str, list[float]] | None = None
+    textures: list[str] = field(default_factory=list)
 
 
 @dataclass

@@ -75,6 +75,8 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
                 sensor.channel = int(args[0])
             else:  # device-specific ops (Lidar point cloud, frequency, ...)
                 sensor.command(op, args)
+        elif tag in robot.displays:
+            robot.displays[tag].command(op, args, robot)
         elif tag in robot.leds:
             if op == "set":
                 robot.leds[tag].set(int(args[0]), sim.model)

@@ -49,7 +49,7 @@ class Offscreen:
     """Renders model cameras at one image size into a reused buffer."""
 
     def __init__(self, model: mujoco.MjModel, width: int, height: int, *, antialias: bool = False,
-                 shadows: bool = False) -> None:
+                 shadows: bool = False, textures: dict[int, int] | None = None) -> None:
         """Make the OpenGL and MuJoCo contexts.
 
         Args:
@@ -58,7 +58,11 @@ class Offscreen:
             height: image height in pixels.
             antialias: 4× multisampling (recordings), else none (device cameras).
             shadows: draw the shadows of lights that cast them.
+            textures: versions of the textures rewritten during the run (tex id -> count, shared with the
+                simulation, which bumps them); each is uploaded again before the next image.
         """
+        self.textures = textures if textures is not None else {}
+        self.uploaded: dict[int, int] = {}
         self.model, self.width, self.height = model, int(width), int(height)
         vis = model.vis
         saved = (vis.global_.offwidth, vis.global_.offheight, vis.quality.offsamples, vis.quality.shadowsize)
@@ -90,6 +94,13 @@ class Offscreen:
         self.rbound = model.geom_rbound[self.cullable]
         self.cull = True
         self.hidden_group = int(np.flatnonzero(~shown)[-1]) if not shown.all() else -1
+
+    def upload_textures(self) -> None:
+        """Upload the textures whose pixels changed since this renderer last drew (its GL context is current)."""
+        for tex, version in self.textures.items():
+            if self.uploaded.get(tex) != version:
+                mujoco.mjr_uploadTexture(self.model, self.context, tex)
+                self.uploaded[tex] = version
 
     def depth(self, data: mujoco.MjData, camera: int, near: float, far: float) -> np.ndarray:
         """Render model camera `camera` and read its depth: metres to the image plane, rows from the bottom.
@@ -123,6 +134,8 @@ class Offscreen:
         if self.context is None:
             raise RuntimeError("this offscreen renderer is closed")
         self.gl.make_current()
+        if self.textures:
+            self.upload_textures()
         cam = self.camera
         if camera < 0:
             cam.type = mujoco.mjtCamera.mjCAMERA_FREE

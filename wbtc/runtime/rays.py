@@ -3,8 +3,9 @@
 Rays start at the sensor's origin along its +x axis; `numberOfRays` rays spread over a cone of
 full angle `aperture`, weighted by exp(−(θ / (aperture · gaussianWidth))²). Generic, sonar and
 laser sensors hit collision geometry (bounding objects); infra-red sensors hit visual geometry and
-see its red channel (reflection factor 0.2 + 0.8 · red). A sensor never sees its own robot's bodies
-(Webots lets infra-red rays see the robot itself; wbtc does not yet).
+see its red channel (reflection factor 0.2 + 0.8 · red). Generic, sonar and laser rays never see
+their own robot's bodies; infra-red rays see the robot itself, as in Webots, but only surfaces they
+meet from the front (a ray leaving the body it starts in goes on), as rendered surfaces are seen.
 
 Not honoured yet: the exact ring layout Webots uses beyond 10 rays (rings of up to 3k + 1 rays are
 used here too, evenly spread), the laser's red spot, `redColorSensitivity`.
@@ -92,7 +93,7 @@ class RayCaster:
         return mujoco.mj_ray(model, data, point + side, direction, groups, 1, exclude, self._geom, self.normal)
 
     def cast(self, start: np.ndarray, direction: np.ndarray, max_range: float, visual: bool,
-             skip_bodies: frozenset[int], exclude: int = -1) -> tuple[float, int]:
+             skip_bodies: frozenset[int], exclude: int = -1, front_only: bool = False) -> tuple[float, int]:
         """Distance to the first hit within `max_range` (inf if none) and the geom hit (-1).
 
         Args:
@@ -103,6 +104,8 @@ class RayCaster:
             skip_bodies: bodies the ray goes through (the sensor's robot).
             exclude: one of them that MuJoCo can skip by itself (the body the sensor is on), which
                 saves casting again past its geoms.
+            front_only: see only surfaces the ray meets from outside (a ray leaving a shape it starts
+                in goes on), as rendered, back-face culled surfaces are seen.
 
         The hit surface's normal is left in `self.normal`.
         """
@@ -116,9 +119,10 @@ class RayCaster:
             if dist < 0 or travelled + dist > max_range:
                 return math.inf, -1
             geom = int(self._geom[0])
-            if int(geom_body[geom]) not in skip_bodies:
+            back = front_only and float(self.normal @ direction) > 0.0
+            if int(geom_body[geom]) not in skip_bodies and not back:
                 return travelled + dist, geom
-            # Another part of the robot (a wheel): continue just past it.
+            # Another part of the robot (a wheel), or a surface seen from behind: continue just past it.
             step = dist + 1e-6
             travelled += step
             point = point + direction * step

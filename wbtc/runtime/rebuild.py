@@ -57,6 +57,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
                      if old_model.body(b).name in names}
     sim.rays = RayCaster(model, data)
     sim.surface = SurfaceColours(model)
+    sim.texture_versions = {}  # the new model's textures are as compiled; displays write theirs again
     mujoco.mj_forward(model, data)
     by_node = {id(robot.entry.node): robot for robot in old_robots}
     by_robot_name = {robot.entry.name: robot for robot in old_robots} if by_name else {}
@@ -104,6 +105,12 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
         for tag, led in new.leds.items():
             if isinstance(old.leds.get(tag), Led) and old.leds[tag].value:
                 led.set(old.leds[tag].value, sim.model)
+    for tag, display in new.displays.items():
+        before_display = old.displays.get(tag)
+        if before_display is not None and keep_motion:
+            display.raster, display.images = before_display.raster, before_display.images
+            display.font_size, display.camera_tag = before_display.font_size, before_display.camera_tag
+            display.changed = True  # show the drawing on the new model's textures
     for tag, emitter in new.emitters.items():
         before_emitter = old.emitters.get(tag)
         if isinstance(before_emitter, Emitter):

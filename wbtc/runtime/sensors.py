@@ -43,6 +43,7 @@ if TYPE_CHECKING:
 
 
 _SONAR_COS = math.cos(math.pi / 8)
+_NO_BODIES: frozenset[int] = frozenset()
 
 
 class Sensor:
@@ -109,7 +110,10 @@ class DistanceSensor(Sensor):
         nearest = math.inf
         for direction, weight in self.rays:
             world_dir = mat @ direction
-            dist, geom = sim.rays.cast(pos, world_dir, self.range, infra_red, self.skip_bodies, self.body)
+            if infra_red:  # infra-red sees its own robot too (Webots' docs), from the front only (see rays)
+                dist, geom = sim.rays.cast(pos, world_dir, self.range, True, _NO_BODIES, -1, front_only=True)
+            else:
+                dist, geom = sim.rays.cast(pos, world_dir, self.range, False, self.skip_bodies, self.body)
             # A sonar echo returns only when the ray meets the surface within π/8 of its normal.
             if sonar and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
                 dist = math.inf

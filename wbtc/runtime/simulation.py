@@ -20,6 +20,7 @@ from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
+from wbtc.runtime.display import Display
 from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
@@ -45,6 +46,7 @@ class RobotState:
     sensors: dict[int, Sensor] = field(default_factory=dict)
     leds: dict[int, Led] = field(default_factory=dict)
     emitters: dict[int, Emitter] = field(default_factory=dict)
+    displays: dict[int, Display] = field(default_factory=dict)
     keyboard_period: int = 0
     keyboard_due: float = math.inf
     keys: list[int] | None = None
@@ -73,6 +75,7 @@ class Simulation:
         self.noise_rng = self.rng if noise else None
         self.rays = RayCaster(self.model, self.data)
         self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
+        self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
         self.keys_down: list[int] = []
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
         self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
@@ -180,6 +183,8 @@ class Simulation:
             state.emitters[tag] = Emitter(dev, self.model)
             state.emitters[tag].owner = id(state.entry)
             state.emitters[tag].bodies = state.bodies
+        elif dev.type == "Display":
+            state.displays[tag] = Display(dev, self.model)
         elif dev.type == "Camera" and dev.camera:
             state.sensors[tag] = Camera(dev, self, state.bodies)
         elif dev.type == "Receiver":
@@ -234,6 +239,9 @@ class Simulation:
             receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]
             deliver(self, self.packets, receivers)
             self.packets = []
+        for robot in self.robots:  # what displays drew this step is on their textures before sensors look
+            for display in robot.displays.values():
+                display.show(self, robot)
         for robot in self.robots:
             for sensor in robot.sensors.values():
                 if sensor.period > 0:
@@ -263,13 +271,18 @@ class Simulation:
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if self.noise_rng is not None else None
 
+    def texture_changed(self, tex: int) -> None:
+        """A texture's pixels changed in the model: renderers upload it again, infra-red rays read it again."""
+        self.texture_versions[tex] = self.texture_versions.get(tex, 0) + 1
+        self.surface.forget(tex)
+
     def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False) -> Offscreen:
         """The offscreen renderer for one image size and quality (made once, freed by `close`)."""
         key = (int(width), int(height), antialias, shadows)
         renderer = self._renderers.get(key)
         if renderer is None:
             renderer = self._renderers[key] = Offscreen(self.model, width, height, antialias=antialias,
-                                                        shadows=shadows)
+                                                        shadows=shadows, textures=self.texture_versions)
         return renderer
 
     def render(self, camera: int, width: int, height: int) -> np.ndarray:

@@ -80,6 +80,11 @@ class SurfaceColours:
             return base * self._mean(tex)
         return base * self._texel(tex, uv)
 
+    def forget(self, tex: int) -> None:
+        """Drop what was read from a texture whose pixels changed (a Display drew on it)."""
+        self._reds.pop(tex, None)
+        self._means.pop(tex, None)
+
     def _uv(self, geom: int, mat: int, local: np.ndarray) -> np.ndarray | None:
         """MuJoCo's texture coordinates (u right, v down from the image's top row) at a local point."""
         model = self.model

@@ -83,6 +83,7 @@ class Window:
         """Scene and GL context for the simulation's (new) model; the view is kept."""
         self.scene = mujoco.MjvScene(sim.model, maxgeom=20000)
         self.context = mujoco.MjrContext(sim.model, mujoco.mjtFontScale.mjFONTSCALE_150)
+        self.uploaded: dict[int, int] = {}  # texture versions this context has (see Simulation.texture_changed)
         self.follow = Follow(sim)
         viewpoint = viewpoint_camera(sim)
         if viewpoint >= 0:  # the free camera opens as wide as the Viewpoint
@@ -236,6 +237,10 @@ class Window:
         mujoco.mjv_updateScene(sim.model, sim.data, self.option, None, self.camera, mujoco.mjtCatBit.mjCAT_ALL,
                                self.scene)
         sim.data.cam_xpos[:], sim.data.cam_xmat[:] = saved
+        for tex, version in sim.texture_versions.items():  # what Displays drew since the last frame
+            if self.uploaded.get(tex) != version:
+                mujoco.mjr_uploadTexture(sim.model, self.context, tex)
+                self.uploaded[tex] = version
         mujoco.mjr_render(viewport, self.scene, self.context)
         if sim.labels:
             self._labels(sim, viewport)
