@@ -33,7 +33,10 @@ def test_compile_writes_textures_beside_the_mjcf(tmp_path: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["lights.xml", "lights_assets"]
     assert len(list((tmp_path / "lights_assets").glob("*.png"))) == 1
     model = mujoco.MjModel.from_xml_path(str(out))
-    assert model.ntex == 2 and model.nmat == 2  # the sky and the checker texture
+    assert model.ntex == 2  # the sky and the checker texture
+    # Every appearance has a material (its highlight): a Material box, two PBR spheres, the checker box.
+    assert model.nmat == 4
+    assert int((model.mat_texid[:, int(mujoco.mjtTextureRole.mjTEXROLE_RGB)] >= 0).sum()) == 1
 
 
 def test_physics_step_option_sets_the_substep(tmp_path: Path) -> None:

@@ -1,15 +1,19 @@
 """Appearance, Material, PBRAppearance and ImageTexture to MuJoCo colours, materials and textures.
 
-A Shape's colour becomes its geom's rgba (MuJoCo multiplies a material's rgba by nothing else, so
-flat colours need no material); a texture becomes a MuJoCo 2D texture and material, the image
-converted to PNG and handed to MuJoCo through the spec's in-memory assets. Emissive colours are
-folded into the rgba with the material's `emission` so lit LEDs glow.
+A Shape's colour becomes its geom's rgba and its material's (MuJoCo draws the geom's rgba unless it
+is the default grey). Every appearance gets a material, which carries its highlight: MuJoCo gives a
+geom without one a bright default specular that Webots' default Material does not have. A texture
+becomes a MuJoCo 2D texture and material, the image converted to PNG and handed to MuJoCo through
+the spec's in-memory assets. Emissive colours are folded into the rgba with the material's
+`emission` so lit LEDs glow.
 
-Not honoured yet: Material `ambientIntensity`, `shininess` and `specularColor` beyond a rough
-specular; PBRAppearance maps other than `baseColorMap` (roughness, metalness, normal, occlusion,
-emissive maps), `IBLStrength`; TextureTransform `center`, `rotation` and `translation` on
-primitives (a mesh's texture coordinates carry the whole transform: `geometry._mesh`); ImageTexture
-`filtering`.
+Highlights: a Material's `specularColor` (its mean: MuJoCo has one level) and `shininess`; a
+PBRAppearance's from roughness and metalness (`_pbr_specular`).
+
+Not honoured yet: Material `ambientIntensity`, a coloured specular; PBRAppearance maps other than
+`baseColorMap` (roughness, metalness, normal, occlusion, emissive maps), `IBLStrength`;
+TextureTransform `center`, `rotation` and `translation` on primitives (a mesh's texture coordinates
+carry the whole transform: `geometry._mesh`); ImageTexture `filtering`.
 """
 
 from __future__ import annotations
@@ -37,10 +41,10 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
     ctx.unhonoured(appearance, _UNHONOURED)
     if appearance.base_type == "PBRAppearance":
         rgba, emission, texture_node = _pbr(appearance)
-        specular, shininess = 0.5 * (1 - float(appearance.get("roughness"))), 1 - float(appearance.get("roughness"))
+        specular, shininess = _pbr_specular(appearance)
     else:
         rgba, emission, texture_node = _phong(appearance)
-        specular, shininess = 0.3, 0.5
+        specular, shininess = _phong_specular(appearance)
     path = None
     if isinstance(texture_node, Node) and texture_node.base_type == "ImageTexture":
         urls = [str(u) for u in texture_node.get("url") or []]
@@ -54,8 +58,6 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
         name = _material(ctx, rgba, emission, specular, shininess, None, _texture_repeat(appearance), appearance,
                          texture=shown)
         return np.array([1.0, 1.0, 1.0, rgba[3]]), name, None
-    if path is None and emission == 0.0:
-        return rgba, None, None
     geometry_node = shape.get("geometry")
     meshed = isinstance(geometry_node, Node) and geometry_node.base_type in ("IndexedFaceSet", "Mesh")
     # A mesh's texture coordinates carry the TextureTransform (geometry._mesh); MuJoCo's own texture
@@ -86,6 +88,32 @@ def _pbr(appearance: Node) -> tuple[np.ndarray, float, Node | None]:
     emissive = np.asarray(appearance.get("emissiveColor"), dtype=float) * float(appearance.get("emissiveIntensity"))
     alpha = 1.0 - float(appearance.get("transparency"))
     return _fold_emission(base, emissive, alpha), _emission(base, emissive), appearance.get("baseColorMap")
+
+
+def _phong_specular(appearance: Node) -> tuple[float, float]:
+    """MuJoCo's specular and shininess for a Phong Appearance: the Material's own (no Material: a dull one).
+
+    Webots' Material has no highlight by default (specularColor 0 0 0); MuJoCo's one specular level
+    is the mean of specularColor, and `shininess` carries over (both in [0, 1]).
+    """
+    material = appearance.get("material")
+    if not isinstance(material, Node):
+        return 0.3, 0.5
+    colour = np.asarray(material.get("specularColor"), dtype=float)
+    return float(np.clip(colour.mean(), 0.0, 1.0)), float(np.clip(float(material.get("shininess")), 0.0, 1.0))
+
+
+def _pbr_specular(appearance: Node) -> tuple[float, float]:
+    """MuJoCo's specular and shininess for a PBRAppearance: smooth surfaces shine, metals in their own colour.
+
+    A dielectric reflects white highlights, stronger the smoother it is: 0.5 · (1 − roughness). A metal
+    reflects in its base colour (physically based shading's F0 blends from white to baseColor with
+    metalness), so a black metal shows no highlight; MuJoCo's level takes the colour's mean.
+    """
+    roughness = float(np.clip(float(appearance.get("roughness")), 0.0, 1.0))
+    metalness = float(np.clip(float(appearance.get("metalness")), 0.0, 1.0))
+    tint = (1 - metalness) + metalness * float(np.mean(np.asarray(appearance.get("baseColor"), dtype=float)))
+    return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
 def _fold_emission(diffuse: np.ndarray, emissive: np.ndarray, alpha: float) -> np.ndarray:

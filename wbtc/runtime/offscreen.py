@@ -49,7 +49,8 @@ class Offscreen:
     """Renders model cameras at one image size into a reused buffer."""
 
     def __init__(self, model: mujoco.MjModel, width: int, height: int, *, antialias: bool = False,
-                 shadows: bool = False, textures: dict[int, int] | None = None) -> None:
+                 shadows: bool = False, textures: dict[int, int] | None = None,
+                 invisible: dict[int, set[int]] | None = None) -> None:
         """Make the OpenGL and MuJoCo contexts.
 
         Args:
@@ -60,7 +61,10 @@ class Offscreen:
             shadows: draw the shadows of lights that cast them.
             textures: versions of the textures rewritten during the run (tex id -> count, shared with the
                 simulation, which bumps them); each is uploaded again before the next image.
+            invisible: geoms each model camera does not draw (a supervisor's Node.setVisibility), shared
+                with the simulation.
         """
+        self.invisible = invisible if invisible is not None else {}
         self.textures = textures if textures is not None else {}
         self.uploaded: dict[int, int] = {}
         self.model, self.width, self.height = model, int(width), int(height)
@@ -148,6 +152,10 @@ class Offscreen:
             data.cam_xpos[camera], data.cam_xmat[camera] = pose[0], np.asarray(pose[1]).reshape(9)
         if self.cull and camera >= 0 and self.hidden_group >= 0 and len(self.cullable):
             culled = self._outside(data, camera, near if near is not None and near > 0 else 0.0)
+        hidden = self.invisible.get(camera) if camera >= 0 and self.hidden_group >= 0 else None
+        if hidden:
+            unseen = np.fromiter(hidden, dtype=int, count=len(hidden))
+            culled = unseen if culled is None else np.union1d(culled, unseen)
         groups = self.model.geom_group
         kept = groups[culled].copy() if culled is not None else None
         try:

@@ -17,6 +17,7 @@ from __future__ import annotations
 import mujoco
 
 from wbtc.compile.compiler import CompileResult
+from wbtc.runtime import visibility
 from wbtc.runtime.devices import Emitter, Led, Receiver
 from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.motors import Motor
@@ -69,6 +70,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
             carry_devices(old, state, sim, keep_time)
         sim.robots.append(state)
     _carry_driven_poses(sim, old_model, old_robots if keep_time else [])
+    visibility.refresh(sim)  # hidden nodes' geoms have new ids (or are gone)
 
 
 def _carry_driven_poses(sim: Simulation, old_model: mujoco.MjModel, old_robots: list[RobotState]) -> None:

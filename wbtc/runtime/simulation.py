@@ -76,6 +76,8 @@ class Simulation:
         self.rays = RayCaster(self.model, self.data)
         self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
         self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
+        self.invisible: dict[int, set[int]] = {}  # geoms a camera does not draw (Node.setVisibility): cam -> geoms
+        self.hidden: dict[tuple[int, int], tuple[Any, Any]] = {}  # (node, viewer) pairs behind `invisible`
         self.keys_down: list[int] = []
         self.generation = 0  # counts model swaps (a supervisor's recompiles)
         self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
@@ -282,7 +284,8 @@ class Simulation:
         renderer = self._renderers.get(key)
         if renderer is None:
             renderer = self._renderers[key] = Offscreen(self.model, width, height, antialias=antialias,
-                                                        shadows=shadows, textures=self.texture_versions)
+                                                        shadows=shadows, textures=self.texture_versions,
+                                                        invisible=self.invisible)
         return renderer
 
     def render(self, camera: int, width: int, height: int) -> np.ndarray:

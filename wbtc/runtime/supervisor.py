@@ -39,7 +39,7 @@ import numpy as np
 from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
-from wbtc.runtime import poses, scene_ops, states, world_file
+from wbtc.runtime import poses, scene_ops, states, visibility, world_file
 from wbtc.runtime.rebuild import shift_device_times, swap_model
 from wbtc.runtime.recordings import RecordingError, Recordings
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, proto_names, to_typed
@@ -312,6 +312,8 @@ class SupervisorHub:
             body = poses.add_force(sim, node, op, args)
             if body is not None:
                 self.applied_forces.append(body)
+        elif op == "setVisibility":
+            visibility.set_visibility(sim, node, self._node(args[0]), bool(args[1]))
         elif op == "restartController":
             outcome.restart += [r for r in sim.robots if r.entry.node is node]
         elif op in ("saveState", "loadState", "setJointPosition"):

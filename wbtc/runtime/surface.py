@@ -5,8 +5,8 @@ floor's black line looks dark, the white paper around it bright). Here that colo
 the compiled MuJoCo model, mapped the way MuJoCo (4.x) draws it, so what a Camera shows and what
 a ground sensor reads agree:
 
-- the base red is the material's rgba (the geom's rgba when it has no material), read at every
-  call so LEDs lit during the run count;
+- the base red is the geom's rgba, or its material's when the geom's is MuJoCo's default grey (the
+  renderer's rule), read at every call so LEDs lit and colours set during the run count;
 - a 2D RGB texture is sampled at the texel under the hit point (nearest texel, repeating), with
   MuJoCo's texture coordinates for the geom type: a finite plane spans the image once from its
   (-x, +y) corner (image top-left) to (+x, -y); an infinite plane repeats every 2 m, shifted by
@@ -68,7 +68,10 @@ class SurfaceColours:
         mat = int(model.geom_matid[geom])
         if mat < 0:
             return float(model.geom_rgba[geom, 0])
-        base = float(model.mat_rgba[mat, 0])
+        # MuJoCo's renderer rule: the geom's own colour, unless it is the default grey (then the material's).
+        rgba = model.geom_rgba[geom]
+        default = rgba[0] == 0.5 and rgba[1] == 0.5 and rgba[2] == 0.5 and rgba[3] == 1.0
+        base = float(model.mat_rgba[mat, 0] if default else rgba[0])
         tex = int(model.mat_texid[mat, _RGB])
         if tex < 0:
             return base

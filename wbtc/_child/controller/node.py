@@ -317,7 +317,7 @@ class Node(NodeState):
         self._ok("wb_supervisor_node_move_viewpoint")
 
     def setVisibility(self, fromNode: Node, visible: bool) -> None:
-        """Hide the node from the viewpoint or a camera: wbtc checks the arguments and renders it anyway."""
+        """Hide the node from a camera, lidar or range-finder (or show it again); the viewpoint is not honoured."""
         function = "wb_supervisor_node_set_visibility"
         if not self._ok(function):
             return
@@ -329,6 +329,8 @@ class Node(NodeState):
                 f"Error: {function}() called with a 'from' argument which is not the viewpoint or a camera, lidar "
                 "or range-finder device."
             )
+            return
+        self._queue("node.setVisibility", fromNode._id, bool(visible))
 
     def __repr__(self) -> str:
         label = f"DEF {self._def} " if self._def else ""
