@@ -172,7 +172,10 @@ def add_joint_device(node: Node, joint: mujoco.MjsJoint, body: mujoco.MjsBody, r
         return
     ctx.unhonoured(node, _UNHONOURED)
     name = str(node.get("name"))
-    if robot.device(name) is not None:
+    other = robot.device(name)
+    motors = ("RotationalMotor", "LinearMotor")
+    # Motors sharing a name are coupled (Webots' `multiplier`; the controller library relays commands).
+    if other is not None and not (kind in motors and other.type in motors):
         ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
         return
     entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, joint=joint.name,

@@ -1,4 +1,12 @@
-"""``Motor``: RotationalMotor and LinearMotor, commanded in position, velocity or force/torque."""
+"""``Motor``: RotationalMotor and LinearMotor, commanded in position, velocity or force/torque.
+
+Coupled motors (Webots' `multiplier`): motors of one robot named "GROUP::anything" with the same GROUP,
+or sharing the very same name, move together. A command to one reaches the others scaled by the ratio
+r = their multiplier / its multiplier: positions and torques times r, velocities times r (their size,
+|r|, in position control), accelerations and available forces times |r|. At start, each coupled motor
+takes the first one's limits scaled by its ratio to it (a negative ratio swaps min and max) and its
+maxVelocity times |r|.
+"""
 
 from __future__ import annotations
 
@@ -20,6 +28,44 @@ def _nan(value: float, function: str, argument: str, suffix: str = " (NaN).") ->
         _session.error(f"Error: {function}() called with an invalid '{argument}' argument{suffix}")
         return True
     return False
+
+
+def _clamped(state: _session.DeviceState, position: float, warn: bool) -> float:
+    """A target inside the motor's limits (when it has some): Webots clamps it, with a warning."""
+    low, high = state.min_position, state.max_position
+    if (low, high) == (0.0, 0.0) or math.isinf(position):
+        return position
+    if warn and position > high:
+        _session.error(f"Warning: too big requested position: {position:g} > {high:g}")
+    elif warn and position < low:
+        _session.error(f"Warning: too low requested position: {position:g} < {low:g}")
+    return min(max(position, low), high)
+
+
+def _coupling_key(name: str) -> str:
+    """Motors with the same key are coupled: the part before "::", else the whole name."""
+    return name.split("::", 1)[0] if "::" in name else "=" + name
+
+
+def _couple(state: _session.DeviceState, session: _session.Session) -> None:
+    """Find the motors coupled with `state` and take the group's limits from its first motor."""
+    key = _coupling_key(state.name)
+    group = [s for s in session.states if s.type in Motor._TYPES and _coupling_key(s.name) == key]
+    state.coupled = [s for s in group if s is not state]
+    first = group[0]
+    if first is state:
+        return
+    ratio = state.multiplier / float(first.field("multiplier", 1.0) or 1.0)
+    low = float(first.field("minPosition", 0.0)) * ratio
+    high = float(first.field("maxPosition", 0.0)) * ratio
+    state.min_position, state.max_position = min(low, high), max(low, high)
+    state.max_velocity = state.velocity = float(first.field("maxVelocity", 10.0)) * abs(ratio)
+
+
+def _coupled(state: _session.DeviceState) -> list[tuple[_session.DeviceState, float]]:
+    """The motors coupled with `state` and their ratios to it (their multiplier / its multiplier)."""
+    own = state.multiplier or 1.0
+    return [(other, other.multiplier / own) for other in getattr(state, "coupled", ())]
 
 
 class Motor(Device):
@@ -52,6 +98,7 @@ class Motor(Device):
         state.available = state.max_force
         state.pid = [float(x) for x in state.field("controlPID", [10.0, 0.0, 0.0])]
         state.value = NAN  # force/torque feedback
+        _couple(state, session)
 
     # -- commands -------------------------------------------------------------------------------------------
     @checked("set_position")
@@ -60,16 +107,12 @@ class Motor(Device):
         position = float(position)
         if _nan(position, "wb_motor_set_position", "position"):
             return
-        low, high = float(self._s.field("minPosition", 0.0)), float(self._s.field("maxPosition", 0.0))
-        if (low, high) != (0.0, 0.0) and not math.isinf(position):
-            # Webots keeps a motor with limits inside them: the target is clamped, with its warning.
-            if position > high:
-                _session.error(f"Warning: too big requested position: {position:g} > {high:g}")
-            elif position < low:
-                _session.error(f"Warning: too low requested position: {position:g} < {low:g}")
-            position = min(max(position, low), high)
+        position = _clamped(self._s, position, warn=True)
         self._s.target = position
         self._queue("setPosition", position)
+        for other, ratio in _coupled(self._s):
+            other.target = _clamped(other, position * ratio, warn=False)
+            _session.require().queue(other.tag, "setPosition", other.target)
 
     @checked("set_velocity")
     def setVelocity(self, velocity: float) -> None:
@@ -85,6 +128,9 @@ class Motor(Device):
             return
         self._s.velocity = velocity
         self._queue("setVelocity", velocity)
+        for other, ratio in _coupled(self._s):
+            other.velocity = velocity * ratio if math.isinf(other.target) else abs(velocity * ratio)
+            _session.require().queue(other.tag, "setVelocity", other.velocity)
 
     @checked("set_acceleration")
     def setAcceleration(self, acceleration: float) -> None:
@@ -97,6 +143,9 @@ class Motor(Device):
             return
         self._s.acceleration = acceleration
         self._queue("setAcceleration", acceleration)
+        for other, ratio in _coupled(self._s):
+            other.acceleration = acceleration if acceleration == -1 else acceleration * abs(ratio)
+            _session.require().queue(other.tag, "setAcceleration", other.acceleration)
 
     def _set_available(self, op: str, force: float) -> None:
         force = float(force)
@@ -107,6 +156,9 @@ class Motor(Device):
             return
         self._s.available = force
         self._queue(op, force)
+        for other, ratio in _coupled(self._s):
+            other.available = force * abs(ratio)
+            _session.require().queue(other.tag, op, other.available)
 
     @checked("set_available_force")
     def setAvailableForce(self, force: float) -> None:
@@ -134,6 +186,8 @@ class Motor(Device):
         if _nan(force, "wb_motor_set_force", "force"):
             return
         self._queue(op, force)
+        for other, ratio in _coupled(self._s):
+            _session.require().queue(other.tag, op, force * ratio)
 
     @checked("set_force")
     def setForce(self, force: float) -> None:
