@@ -67,3 +67,21 @@ def test_a_range_finder_sees_the_wall_at_its_planar_depth(tmp_path: Path):
     assert data.startswith(header) and len(data) == len(header) + 4 * 48
     level, _, _, exponent = data[len(header) + 4 * (3 * 8 + 3):][:4]
     assert abs((level + 0.5) / 256 * 2 ** (exponent - 128) - 1.3) < 0.01
+
+
+def test_a_cylindrical_range_finder_sees_all_around_along_its_rays(tmp_path: Path):
+    # fieldOfView 2π over 16 columns: column j looks at azimuth π − (j + ½)·π/8; columns 7 and 8 look
+    # ±π/16 off the axis, at the box's face 1.3 m ahead (0.26 m aside, within its ±0.4 m), and read the
+    # distance along the ray, 1.3 / cos(π/16). One row: elevation 0.
+    world = WORLD.replace("      width 8\n      height 6\n",
+                          '      width 16\n      height 1\n      fieldOfView 6.283185\n'
+                          '      projection "cylindrical"\n')
+    world = project_with_controller(tmp_path, "w.wbt", world, "probe", PROBE)
+    result = CliRunner().invoke(app, ["run", str(world), "--headless", "--duration", "0.05"])
+    assert result.exit_code == 0, result.output
+    out = {line.split()[1]: line.split()[2:] for line in result.output.splitlines() if line.startswith("[robot] ")}
+    (row,) = [[float(v) for v in row.split(",")] for row in out["rows"]]
+    assert len(row) == 16
+    assert abs(row[7] - 1.3 / math.cos(math.pi / 16)) < 1e-3 and abs(row[8] - row[7]) < 1e-6
+    # ±3π/16 (0.87 m aside) misses the box; nothing else is around, behind included.
+    assert all(math.isinf(row[c]) for c in range(16) if c not in (7, 8))

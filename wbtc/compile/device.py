@@ -98,7 +98,10 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.group = SITE_GROUP
     site.info = info(node)
     site.pos = at.pos
-    site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if kind == "Lidar" and ctx.legacy_axes(node) else at.quat
+    # Lidars and RangeFinders cast rays in FLU device axes (a non-planar range image); pre-R2022a ones
+    # looked along -z, turned here as the camera is.
+    turned = kind in ("Lidar", "RangeFinder") and ctx.legacy_axes(node)
+    site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if turned else at.quat
     if robot.rub and kind in _AXIS_DEVICES and not ctx.legacy_axes(node):
         # A library robot in a pre-R2022a world: its IMU, accelerometer, gyro and compass read along
         # the RUB axes its PROTO had then (see legacy_protos).

@@ -33,22 +33,14 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-import mujoco
 import numpy as np
 
-from wbtc.compile.context import VISUAL_GROUP
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.sensors import Sensor
+from wbtc.runtime.visible_rays import VisibleRays
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
-
-#: How many times a ray is continued past clipped surfaces and back faces before giving up.
-_MAX_CONTINUES = 16
-_EPS = 1e-6
-#: A geom group the lidar's rays do not see: a shape a ray goes through is put there for one batch.
-_HIDDEN_GROUP = 5
-
 
 class Lidar(Sensor):
     """A Lidar: range image layer by layer, optional point cloud (see the module docstring)."""
@@ -73,9 +65,7 @@ class Lidar(Sensor):
         self.step_ms = sim.step_ms
         self.angle = 0.0  # the rotating head's azimuth in the lidar frame (it turns clockwise: decreasing)
         self.last_ms = 0.0
-        self.groups = np.zeros(6, dtype=np.uint8)
-        self.groups[VISUAL_GROUP] = 1
-        self._inside: tuple[mujoco.MjModel | None, list[int]] = (None, [])  # see _cast
+        self.caster = VisibleRays(self.near)
         self.rays, self.depth_axis, self.angles = self._layout()
         count = self.layers * self.width
         self.ranges = np.zeros(count) if self.rotating else np.full(count, math.inf)
@@ -167,7 +157,7 @@ class Lidar(Sensor):
         # Planar: the range is the depth along the camera axis, so a ray may travel farther than maxRange.
         cosine = local @ self.depth_axis if self.depth_axis is not None else np.ones(len(index))
         limit = self.max_range / np.maximum(cosine, 1e-6)
-        dist = self._cast(sim, pos, local @ mat.T, limit)
+        dist = self.caster.cast(sim, pos, local @ mat.T, limit)
         ranges = dist * cosine
         ranges[(ranges < self.min_range) | (ranges >= self.max_range)] = math.inf
         if self.noise > 0 and sim.noise_rng is not None:
@@ -178,98 +168,6 @@ class Lidar(Sensor):
             ranges[finite] = np.round(ranges[finite] / self.resolution) * self.resolution
         return ranges
 
-    def _cast(self, sim: Simulation, origin: np.ndarray, dirs: np.ndarray, limit: np.ndarray) -> np.ndarray:
-        """Distance along each unit ray to the first visible front face beyond `near` (inf: none within `limit`).
-
-        A hit the lidar cannot see is a back face (the ray starts inside a shape, or meets a plane from
-        behind) or a surface clipped by `near`: the ray goes on through that shape. Such rays are cast
-        again in batches, one per set of shapes they went through, with those shapes hidden. A primitive
-        is convex, so a ray never re-enters it and hiding it is exact; a mesh may be concave, so its rays
-        go on one by one instead. A primitive that holds the origin (a lidar's own housing) hides every
-        ray: once met from behind it is hidden from the start, for as long as it still holds the origin.
-        """
-        model, data = sim.model, sim.data
-        count = len(dirs)
-        start = np.array(origin, dtype=float)
-        cutoff = float(limit.max()) + 1.0
-        if self._inside[0] is not model:
-            self._inside = (model, [])
-        inside = [g for g in self._inside[1] if _holds(model, data, g, start)]
-        self._inside = (model, inside)
-        geom, dist, facing = self._hidden_cast(model, data, start, dirs, cutoff, inside)
-        types = model.geom_type
-        key = np.zeros(count, dtype=np.int64)  # which set of shapes each ray went through (0: none)
-        sets: dict[tuple[int, int], int] = {}
-        members: list[list[int]] = [list(inside)]
-        final = np.zeros(count, dtype=bool)  # rays continued one by one: their distance is the answer
-        for _ in range(_MAX_CONTINUES):
-            unseen = np.flatnonzero(~final & (geom >= 0) & ((facing > 0) | (dist < self.near)))
-            if not len(unseen):
-                break
-            mesh = types[geom[unseen]] == mujoco.mjtGeom.mjGEOM_MESH
-            for k in unseen[mesh].tolist():
-                dist[k] = self._continue(sim, start, dirs[k], float(dist[k]), float(limit[k]))
-                final[k] = True
-            unseen = unseen[~mesh]
-            pairs, which = np.unique(key[unseen] * model.ngeom + geom[unseen], return_inverse=True)
-            for index, pair in enumerate(pairs.tolist()):
-                previous, shape = divmod(pair, model.ngeom)
-                rays = unseen[which == index]
-                if facing[rays[0]] > 0 and shape not in inside:
-                    # A convex shape met from behind first holds the origin (a plane: the origin is behind
-                    # it): hide it from the start at the next scans, while it still does.
-                    inside.append(shape)
-                number = sets.setdefault((previous, shape), len(members))
-                if number == len(members):
-                    members.append(members[previous] + [shape])
-                key[rays] = number
-                geom[rays], dist[rays], facing[rays] = self._hidden_cast(model, data, start, dirs[rays], cutoff,
-                                                                         members[number])
-        else:
-            dist[~final & (geom >= 0) & ((facing > 0) | (dist < self.near))] = math.inf
-        dist[~final & (geom < 0)] = math.inf
-        dist[dist > limit] = math.inf
-        return dist
-
-    def _hidden_cast(self, model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray, dirs: np.ndarray,
-                     cutoff: float, hidden: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """`_multi_ray` with the geoms `hidden` put out of the rays' sight for the cast."""
-        if not hidden:
-            return self._multi_ray(model, data, start, dirs, cutoff)
-        saved = model.geom_group[hidden].copy()
-        model.geom_group[hidden] = _HIDDEN_GROUP
-        try:
-            return self._multi_ray(model, data, start, dirs, cutoff)
-        finally:
-            model.geom_group[hidden] = saved
-
-    def _multi_ray(self, model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray, dirs: np.ndarray,
-                   cutoff: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """One mj_multiRay batch from `start`: the geom hit by each ray (-1), its distance, normal · direction."""
-        n = len(dirs)
-        geom, dist, normal = np.empty(n, dtype=np.int32), np.empty(n), np.empty(3 * n)
-        mujoco.mj_multiRay(model, data, start, np.ascontiguousarray(dirs).ravel(), self.groups, 1, -1, geom, dist,
-                           normal, n, cutoff)
-        return geom, dist, np.einsum("ij,ij->i", normal.reshape(n, 3), dirs)
-
-    def _continue(self, sim: Simulation, origin: np.ndarray, direction: np.ndarray, travelled: float,
-                  limit: float) -> float:
-        """Follow one ray past hits the lidar cannot see; the distance of the first one it can."""
-        geom = np.zeros(1, dtype=np.int32)
-        normal = np.zeros(3)
-        for _ in range(_MAX_CONTINUES):
-            travelled += _EPS
-            if travelled > limit:
-                return math.inf
-            point = origin + direction * travelled
-            step = mujoco.mj_ray(sim.model, sim.data, point, direction, self.groups, 1, -1, geom, normal)
-            if step < 0:
-                return math.inf
-            travelled += step
-            if float(normal @ direction) <= 0 and travelled >= self.near:
-                return travelled
-        return math.inf
-
     def _points(self) -> list[tuple[float, float, float, int, float]]:
         """The point cloud in the lidar's frame: (x, y, z, layer, time) per column, layer after layer."""
         theta, phi = self.angles[:, 0], self.angles[:, 1]
@@ -279,25 +177,3 @@ class Lidar(Sensor):
         layers = np.repeat(np.arange(self.layers), self.width)
         return [(float(x), float(y), float(z), int(layer), float(t))
                 for (x, y, z), layer, t in zip(xyz.tolist(), layers.tolist(), self.times.tolist(), strict=True)]
-
-
-def _holds(model: mujoco.MjModel, data: mujoco.MjData, geom: int, point: np.ndarray) -> bool:
-    """Whether the primitive `geom` holds `point` (a plane: `point` is behind it)."""
-    local = data.geom_xmat[geom].reshape(3, 3).T @ (point - data.geom_xpos[geom])
-    x, y, z = (float(v) for v in local)
-    size = model.geom_size[geom]
-    kind = int(model.geom_type[geom])
-    if kind == mujoco.mjtGeom.mjGEOM_PLANE:
-        return z < 0.0
-    if kind == mujoco.mjtGeom.mjGEOM_SPHERE:
-        return x * x + y * y + z * z < size[0] ** 2
-    if kind == mujoco.mjtGeom.mjGEOM_CAPSULE:  # size: radius, half length along z
-        axial = max(abs(z) - size[1], 0.0)
-        return x * x + y * y + axial * axial < size[0] ** 2
-    if kind == mujoco.mjtGeom.mjGEOM_ELLIPSOID:
-        return (x / size[0]) ** 2 + (y / size[1]) ** 2 + (z / size[2]) ** 2 < 1.0
-    if kind == mujoco.mjtGeom.mjGEOM_CYLINDER:  # size: radius, half height
-        return x * x + y * y < size[0] ** 2 and abs(z) < size[1]
-    if kind == mujoco.mjtGeom.mjGEOM_BOX:  # size: half extents
-        return abs(x) < size[0] and abs(y) < size[1] and abs(z) < size[2]
-    return False

@@ -1,12 +1,17 @@
-"""Webots' RangeFinder: a depth image rendered by the device's MuJoCo camera.
+"""Webots' RangeFinder: a depth image rendered by the device's MuJoCo camera, or cast ray by ray.
 
-Each sample renders the device camera with its frustum from `near` to `maxRange` and reads the depth
-buffer back as metres to the image plane (Webots' range image is planar depth, not the distance along
-the ray), rows from the top. A depth below `minRange`, or where nothing is drawn before `maxRange`,
-reads inf. `noise` adds a Gaussian of σ = noise × maxRange to every pixel; `resolution` rounds depths
-to its multiples.
+`projection "planar"` (the default): each sample renders the device camera with its frustum from
+`near` to `maxRange` and reads the depth buffer back as metres to the image plane (planar depth,
+not the distance along the ray), rows from the top. `"cylindrical"` and `"spherical"`: pixel (i, j)
+looks at azimuth θⱼ = fov/2 − (j + ½)·fov/w and elevation φᵢ = vfov/2 − (i + ½)·vfov/h, with the
+vertical field of view vfov = fov·h/w (square angular pixels), and reads the distance along that
+ray, cast as a depth camera sees (`visible_rays`: visual shapes, front faces, beyond `near`); so a
+field of view up to 2π works. A range below `minRange`, or where nothing is seen before `maxRange`,
+reads inf. `noise` adds a Gaussian of σ = noise × maxRange to every pixel; `resolution` rounds
+ranges to its multiples.
 
-Not honoured yet: `spherical` projections, `motionBlur`, `lens` distortion.
+Not honoured yet: `motionBlur`, `lens` distortion; Webots renders a non-planar projection through a
+cube map, whose pixel rounding is not reproduced.
 """
 
 from __future__ import annotations
@@ -17,6 +22,7 @@ import numpy as np
 
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime.sensors import Sensor
+from wbtc.runtime.visible_rays import VisibleRays
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -36,11 +42,21 @@ class RangeFinder(Sensor):
         self.noise = float(f.get("noise", 0.0))
         self.resolution = float(f.get("resolution", -1.0))
         self.camera = sim.model.camera(entry.camera).id
+        fov = float(f.get("fieldOfView", 0.7854))
+        # Before R2023a a `spherical TRUE` RangeFinder was what `projection "spherical"` is now.
+        planar = str(f.get("projection", "planar")) == "planar" and not f.get("spherical")
+        self.rays = None if planar else _angular_rays(fov, self.width, self.height)
+        self.caster = VisibleRays(self.near)
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
-        """Render the depth image (rows from the top, as Webots' range image)."""
-        depth = sim.renderer(self.width, self.height).depth(sim.data, self.camera, self.near, self.max_range)
-        ranges = depth[::-1].copy()
+        """The range image (rows from the top, as Webots' range image)."""
+        if self.rays is None:
+            depth = sim.renderer(self.width, self.height).depth(sim.data, self.camera, self.near, self.max_range)
+            ranges = depth[::-1].copy()
+        else:
+            pos, mat = self.frame(sim)
+            limit = np.full(len(self.rays), self.max_range)
+            ranges = self.caster.cast(sim, pos, self.rays @ mat.T, limit).reshape(self.height, self.width)
         finite = np.isfinite(ranges)
         if self.noise > 0 and sim.noise_rng is not None:
             ranges[finite] += sim.noise_rng.normal(0.0, self.noise * self.max_range, int(finite.sum()))
@@ -48,3 +64,12 @@ class RangeFinder(Sensor):
             ranges[finite] = np.round(ranges[finite] / self.resolution) * self.resolution
         ranges[(ranges < self.min_range) | (ranges > self.max_range)] = np.inf
         return {"ranges": ranges.astype(np.float32).ravel().tolist()}
+
+
+def _angular_rays(fov: float, width: int, height: int) -> np.ndarray:
+    """Unit rays of a cylindrical/spherical range image in the device frame (+x ahead, +y left, +z up), row-major."""
+    vfov = fov * height / max(width, 1)
+    theta = fov / 2 - (np.arange(width) + 0.5) * fov / width
+    phi = vfov / 2 - (np.arange(height) + 0.5) * vfov / height
+    tt, pp = np.meshgrid(theta, phi)
+    return np.stack([np.cos(tt) * np.cos(pp), np.sin(tt) * np.cos(pp), np.sin(pp)], axis=-1).reshape(-1, 3)
