@@ -192,7 +192,7 @@ class Vector3Sensor(Sensor):
 
 
 class GPS(Sensor):
-    """Position and velocity of the device in the world frame: [x, y, z, vx, vy, vz]."""
+    """Position of the device in the world's axes and its velocity in ENU order: [x, y, z, ve, vn, vu]."""
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
         super().__init__(entry, sim, skip_bodies)
@@ -207,7 +207,10 @@ class GPS(Sensor):
         p = sim.from_model @ pos
         if self.accuracy > 0 and sim.noise_rng is not None:
             p = p + sim.noise_rng.normal(0.0, self.accuracy, 3)
-        v = sim.from_model @ self._res[3:]
+        # Webots gives the speed vector in east-north-up order whatever the world's coordinateSystem (an
+        # NUE world's velocity (n, u, e) reads (e, n, u)), while positions keep the world's axes: the
+        # model frame is ENU, so the model's velocity is that vector as is.
+        v = self._res[3:]
         return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
 
 
