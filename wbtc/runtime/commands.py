@@ -13,7 +13,7 @@ from typing import Any
 
 import mujoco
 
-from wbtc.compile.table import DeviceEntry
+from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.devices import Receiver
 from wbtc.runtime.scene_ops import store_pose
 from wbtc.runtime.scene_tree import to_typed
@@ -23,6 +23,20 @@ from wbtc.runtime.simulation import RobotState, Simulation
 def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -> dict[str, Any]:
     """The INIT frame for a robot's controller."""
     entry = robot.entry
+    devices = device_infos(entry)
+    robot.announced = len(devices)
+    return {
+        "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
+                  "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
+                  "supervisor": entry.supervisor, "synchronization": entry.synchronization,
+                  "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version,
+                  "differential_wheels": entry.legacy or None},
+        "time": sim.time, "devices": devices,
+    }
+
+
+def device_infos(entry: RobotEntry, start: int = 0) -> list[dict[str, Any]]:
+    """What a controller learns about its robot's devices, from tag `start` on."""
     names = {d.name: tag for tag, d in enumerate(entry.devices)}
     # The motor, position sensor and brake of each joint axis know each other's tags.
     axes: dict[tuple[str, int], dict[str, int]] = {}
@@ -32,6 +46,8 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
             axes.setdefault((dev.joint, dev.axis), {}).setdefault(role, tag)
     devices = []
     for tag, dev in enumerate(entry.devices):
+        if tag < start:
+            continue
         info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
                                 "model": str(dev.fields.get("model", "") or ""), "fields": dev.fields}
         mates = axes.get((dev.joint, dev.axis), {}) if dev.joint else {}
@@ -42,14 +58,7 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
         if dev.type == "Brake":
             info.update(motor=mates.get("motor"), sensor=mates.get("sensor"))
         devices.append(info)
-    return {
-        "robot": {"name": entry.name, "model": entry.model, "custom_data": robot.custom_data,
-                  "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
-                  "supervisor": entry.supervisor, "synchronization": entry.synchronization,
-                  "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version,
-                  "differential_wheels": entry.legacy or None},
-        "time": sim.time, "devices": devices,
-    }
+    return devices
 
 
 def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
@@ -143,4 +152,19 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if robot.custom_data_pushed:
         message["custom_data"] = robot.custom_data
         robot.custom_data_pushed = False
+    new = announce_devices(robot)
+    if new:
+        message["new_devices"] = new
     return message
+
+
+def announce_devices(robot: RobotState) -> list[dict[str, Any]]:
+    """Devices a supervisor imported into the robot that its controller does not know yet (then it does).
+
+    They take new tags after the known ones, as in Webots (`rebuild` keeps the old devices' tags).
+    """
+    if robot.announced is None or len(robot.entry.devices) <= robot.announced:
+        return []
+    new = device_infos(robot.entry, robot.announced)
+    robot.announced = len(robot.entry.devices)
+    return new

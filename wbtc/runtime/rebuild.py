@@ -64,8 +64,10 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
     by_robot_name = {robot.entry.name: robot for robot in old_robots} if by_name else {}
     sim.robots = []
     for entry in result.table.robots:
-        state = sim._robot(entry)
         old = by_node.get(id(entry.node)) or by_robot_name.get(entry.name)
+        if old is not None:
+            _keep_tags(old.entry.devices, entry.devices)
+        state = sim._robot(entry)
         if old is not None:
             carry_devices(old, state, sim, keep_time)
         sim.robots.append(state)
@@ -88,9 +90,17 @@ def _carry_driven_poses(sim: Simulation, old_model: mujoco.MjModel, old_robots: 
     sim.drives = [DriveState(r.entry.drive, sim, r) for r in sim.robots if r.entry.drive is not None]
 
 
+def _keep_tags(before: list, after: list) -> None:
+    """Order a robot's recompiled devices so the ones it had keep their tags; new ones come after, as in Webots."""
+    rank = {id(dev.node): index for index, dev in enumerate(before)}
+    known = sorted((dev for dev in after if id(dev.node) in rank), key=lambda dev: rank[id(dev.node)])
+    after[:] = known + [dev for dev in after if id(dev.node) not in rank]
+
+
 def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:
     """Give a robot's new device objects the state of the old ones (same tags: same devices)."""
     new.custom_data, new.custom_data_pushed = old.custom_data, old.custom_data_pushed
+    new.announced = old.announced
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
     if keep_motion:
         new.distance = old.distance

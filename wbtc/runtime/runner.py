@@ -183,7 +183,8 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
         _apply(sim, link, list(args[0]), hub)
         hub.flush()
         _catch_up(sim, link)
-        return {"result": None}
+        # Webots' library sees devices imported into its own robot at once (getDevice right after the import).
+        return {"result": None, "new_devices": commands.announce_devices(link.robot)}
     try:
         return {"result": hub.call(link.robot, op, args)}
     except SupervisorError as exc:

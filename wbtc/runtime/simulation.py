@@ -52,6 +52,7 @@ class RobotState:
     keys: list[int] | None = None
     custom_data: str = ""
     custom_data_pushed: bool = False  # a supervisor wrote customData: the next reply tells the controller
+    announced: int | None = None  # how many devices the controller knows (None: no controller has started)
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
 

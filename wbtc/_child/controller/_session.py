@@ -78,6 +78,7 @@ class Session:
         self.battery_period = 0
         self.battery_value = 0.0
         self.motions: list[weakref.ref] = []
+        self.on_new_devices: Callable[[list[DeviceState]], None] | None = None  # set by Robot()
         # Supervisor API state (supervisor.py, node.py, field.py)
         self.nodes: dict[int, Any] = {}  # node id -> the one Node object for it
         self.fields: dict[int, Any] = {}  # field id -> the one Field object for it
@@ -176,6 +177,17 @@ class Session:
             self.battery_value = float(reply["battery"])
         if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
             self.custom_data = str(reply["custom_data"])
+        self._new_devices(reply)
+
+    def _new_devices(self, reply: dict) -> None:
+        """Devices a supervisor imported into this robot (in a step or flush reply) join the known ones."""
+        if not reply.get("new_devices"):
+            return
+        added = [DeviceState(info) for info in reply["new_devices"] if int(info["tag"]) not in self.by_tag]
+        self.states += added
+        self.by_tag.update((state.tag, state) for state in added)
+        if self.on_new_devices is not None:
+            self.on_new_devices(added)
 
     def _play_motions(self, duration: int) -> None:
         if duration <= 0 or not self.motions:
@@ -262,6 +274,7 @@ class Session:
             return False
         self.commands = []
         self._forget_pending()
+        self._new_devices(reply)
         return True
 
     def _forget_pending(self) -> None:

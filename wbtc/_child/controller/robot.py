@@ -78,8 +78,19 @@ class Robot:
             return
         Robot.created = self
         session = _session.start()
+        self.devices: dict[str, Device] = {}
+        self._add_devices(session.states)
+        session.on_new_devices = self._add_devices
+        self.keyboard = Keyboard(0)
+        self.mouse = Mouse(0)
+        self.joystick = Joystick(0)
+
+    # -- devices --------------------------------------------------------------------------------------------
+    def _add_devices(self, states: list[_session.DeviceState]) -> None:
+        """Set up the device objects of `states` (at start, and for devices a supervisor imports later)."""
+        session = _session.require()
         classes = {}
-        for state in session.states:
+        for state in states:
             cls = device_class(state.type)
             if cls is None:
                 kind = node_type(state.type) or state.type
@@ -88,15 +99,10 @@ class Robot:
             cls._setup(state, session)
             state.absorb = cls._absorb
             classes[state.tag] = cls
-        self.devices: dict[str, Device] = {}
-        for state in session.states:
-            if state.tag in classes:
+        for state in states:
+            if state.tag in classes and state.name not in self.devices:
                 self.devices[state.name] = classes[state.tag](state.tag)
-        self.keyboard = Keyboard(0)
-        self.mouse = Mouse(0)
-        self.joystick = Joystick(0)
 
-    # -- devices --------------------------------------------------------------------------------------------
     def getDevice(self, name: str) -> Any:
         """The device with that name, or None (and a message on stderr)."""
         if name not in self.devices:
