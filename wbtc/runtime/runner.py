@@ -9,8 +9,9 @@ one second to exit. Supervisors' writes are applied before the world advances (s
 robots the world gains get their controllers started, robots it loses have theirs stopped.
 
 A supervisor's `simulationSetMode` is honoured: REAL_TIME paces the run to the wall clock from
-that moment on, FAST runs it as fast as it goes, and PAUSE ends it (Webots waits for someone to
-press Run; wbtc has no one to wait for and says so).
+that moment on, FAST runs it as fast as it goes, and PAUSE stops the clock: controllers asking for
+no time (`step(0)`) are still answered and may resume, and once every controller waits for time to
+pass the run ends (Webots waits for someone to press Run; wbtc has no one to wait for and says so).
 """
 
 from __future__ import annotations
@@ -214,8 +215,18 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
                 reason = f"simulationQuit({hub.quit_status})"
                 break
             if hub.mode == MODE_PAUSE:
-                reason = f"simulationSetMode(PAUSE) at {sim.time:.3f} s: nothing can resume a wbtc run"
-                break
+                # Paused, time stands still: controllers that asked for no time (step(0)) are answered, and
+                # may resume; when every controller waits for time to pass, nothing can resume a headless run.
+                ready = [link for link in links if link.status == "running" and link.wake_ms <= sim.time_ms + 1e-9]
+                if not ready:
+                    reason = f"simulationSetMode(PAUSE) at {sim.time:.3f} s: nothing can resume a wbtc run"
+                    break
+                for link in ready:
+                    assert link.process is not None
+                    link.process.send(commands.reply(sim, link.robot, 0))
+                for link in ready:
+                    _receive(sim, link, hub)
+                continue
             pace.set(hub.mode == MODE_REAL_TIME, sim.time, restart=bool(shift))
         active = [link for link in links if link.status == "running"]
         if rest_ends and not active and _at_rest(sim):
