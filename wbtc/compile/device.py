@@ -115,8 +115,25 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
         entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
     if kind == "Display":
         display_texture.register(node, entry, ctx)
+    if kind == "VacuumGripper":
+        entry.weld = _gripper_weld(body, ctx)
     robot.devices.append(entry)
     return entry
+
+
+def _gripper_weld(body: mujoco.MjsBody, ctx: CompileContext) -> str:
+    """An inactive weld from the gripper's body to the world; the runtime re-targets it at what it holds."""
+    weld = ctx.spec.add_equality()
+    weld.name = ctx.unique("equality", f"{body.name}/vacuum")
+    weld.type = mujoco.mjtEq.mjEQ_WELD
+    weld.objtype = mujoco.mjtObj.mjOBJ_BODY
+    weld.name1, weld.name2 = body.name, "world"
+    weld.active = False
+    data = np.zeros(len(weld.data))
+    data[6] = 1.0  # relquat (1, 0, 0, 0): the runtime writes the real relative pose when it takes hold
+    data[10] = 1.0  # torquescale
+    weld.data = data
+    return weld.name
 
 
 def _camera(node: Node, body: mujoco.MjsBody, ctx: CompileContext, at: Frame, name: str) -> str:

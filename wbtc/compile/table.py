@@ -40,6 +40,7 @@ class DeviceEntry:
         propeller: for a Propeller's motor: its shaft axis in its site's frame ("axis") and its
             thrust and torque constants ("thrust", "torque"); the site is its center of thrust.
         textures: for a Display, the MuJoCo textures that show its image.
+        weld: for a VacuumGripper, its (inactive) weld equality, which the runtime points at what it holds.
     """
 
     name: str
@@ -59,6 +60,7 @@ class DeviceEntry:
     axis: int = 1
     propeller: dict[str, list[float]] | None = None
     textures: list[str] = field(default_factory=list)
+    weld: str | None = None
 
 
 @dataclass

@@ -21,6 +21,7 @@ from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
+from wbtc.runtime.grippers import VacuumGripper
 from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
@@ -47,6 +48,7 @@ class RobotState:
     leds: dict[int, Led] = field(default_factory=dict)
     emitters: dict[int, Emitter] = field(default_factory=dict)
     displays: dict[int, Display] = field(default_factory=dict)
+    grippers: dict[int, VacuumGripper] = field(default_factory=dict)
     keyboard_period: int = 0
     keyboard_due: float = math.inf
     keys: list[int] | None = None
@@ -186,6 +188,8 @@ class Simulation:
             state.emitters[tag] = Emitter(dev, self.model)
             state.emitters[tag].owner = id(state.entry)
             state.emitters[tag].bodies = state.bodies
+        elif dev.type == "VacuumGripper":
+            state.sensors[tag] = state.grippers[tag] = VacuumGripper(dev, self, state.bodies)
         elif dev.type == "Display":
             state.displays[tag] = Display(dev, self.model)
         elif dev.type == "Camera" and dev.camera:
@@ -215,6 +219,8 @@ class Simulation:
         for robot in self.robots:
             for motor in robot.motors.values():
                 motor.update(model, data, ts)
+            for gripper in robot.grippers.values():
+                gripper.update(self)
         if self._drags[0] is not model:  # made once per model (a supervisor's recompile makes another)
             self._drags = (model, drags(model, self.table.linear_damping))
         for drag in self._drags[1]:
