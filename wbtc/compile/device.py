@@ -115,14 +115,28 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
         entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
     if kind == "Display":
         display_texture.register(node, entry, ctx)
-    if kind == "VacuumGripper":
+    if kind in ("VacuumGripper", "Connector"):
         entry.weld = _gripper_weld(body, ctx)
+        entry.legacy_axes = ctx.legacy_axes(node)
     robot.devices.append(entry)
     return entry
 
 
+def add_loose_connector(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> None:
+    """A Connector outside any robot (on a plain Solid): no controller, but robots' connectors dock to it."""
+    site = body.add_site()
+    site.name = ctx.unique("site", body.name)
+    site.size = [0.002, 0, 0]
+    site.group = SITE_GROUP
+    site.info = info(node)
+    entry = DeviceEntry(name=str(node.get("name")), type="Connector", node=node, fields=plain_fields(node),
+                        body=body.name, site=site.name, weld=_gripper_weld(body, ctx),
+                        legacy_axes=ctx.legacy_axes(node))
+    ctx.table.connectors.append(entry)
+
+
 def _gripper_weld(body: mujoco.MjsBody, ctx: CompileContext) -> str:
-    """An inactive weld from the gripper's body to the world; the runtime re-targets it at what it holds."""
+    """An inactive weld from the device's body to the world; the runtime re-targets it at what it holds."""
     weld = ctx.spec.add_equality()
     weld.name = ctx.unique("equality", f"{body.name}/vacuum")
     weld.type = mujoco.mjtEq.mjEQ_WELD

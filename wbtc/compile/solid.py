@@ -216,6 +216,8 @@ class BodyBuilder:
             if linear or angular:
                 ctx.damped.append((free_joint.name, linear, angular))
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
+        if robot is None and node.base_type == "Connector":
+            device.add_loose_connector(node, body, ctx)
         self._walk_device_children(entry, node, body, inner, robot, moves)
         if entry is not None and entry.type == "LED":
             device.finish_led(entry, body, ctx)

@@ -40,7 +40,9 @@ class DeviceEntry:
         propeller: for a Propeller's motor: its shaft axis in its site's frame ("axis") and its
             thrust and torque constants ("thrust", "torque"); the site is its center of thrust.
         textures: for a Display, the MuJoCo textures that show its image.
-        weld: for a VacuumGripper, its (inactive) weld equality, which the runtime points at what it holds.
+        weld: for a VacuumGripper or a Connector, its (inactive) weld equality, which the runtime points at
+            what it holds or docks to.
+        legacy_axes: the device was written before R2022a (a Connector docked along its z axis then).
     """
 
     name: str
@@ -61,6 +63,7 @@ class DeviceEntry:
     propeller: dict[str, list[float]] | None = None
     textures: list[str] = field(default_factory=list)
     weld: str | None = None
+    legacy_axes: bool = False
 
 
 @dataclass
@@ -149,6 +152,7 @@ class DeviceTable:
         gps_wgs84: whether WorldInfo.gpsCoordinateSystem is "WGS84".
         initial_velocities: for each body of a Solid with Physics whose `linearVelocity` or
             `angularVelocity` is not zero (by body name), those two vectors in the world's own axes.
+        connectors: Connectors outside robots (a docking plate on a plain Solid), as device entries.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -167,6 +171,7 @@ class DeviceTable:
     initial_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
     gps_reference: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     gps_wgs84: bool = False
+    connectors: list[DeviceEntry] = field(default_factory=list)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

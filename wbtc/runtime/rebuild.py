@@ -73,6 +73,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
         sim.robots.append(state)
     _carry_driven_poses(sim, old_model, old_robots if keep_time else [])
     visibility.refresh(sim)  # hidden nodes' geoms have new ids (or are gone)
+    sim.gather_connectors()  # connections are made again by the connectors' own rules (not carried over)
 
 
 def _carry_driven_poses(sim: Simulation, old_model: mujoco.MjModel, old_robots: list[RobotState]) -> None:

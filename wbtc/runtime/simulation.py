@@ -18,6 +18,7 @@ import numpy as np
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
+from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
@@ -97,6 +98,7 @@ class Simulation:
         mujoco.mj_forward(self.model, self.data)
         self._start_velocities()
         self.robots = [self._robot(entry) for entry in self.table.robots]
+        self.gather_connectors()
         self.drives = [DriveState(r.entry.drive, self, r) for r in self.robots if r.entry.drive is not None]
 
     def _start_velocities(self) -> None:
@@ -188,6 +190,8 @@ class Simulation:
             state.emitters[tag] = Emitter(dev, self.model)
             state.emitters[tag].owner = id(state.entry)
             state.emitters[tag].bodies = state.bodies
+        elif dev.type == "Connector" and dev.weld:
+            state.sensors[tag] = Connector(dev, self, state.bodies)
         elif dev.type == "VacuumGripper":
             state.sensors[tag] = state.grippers[tag] = VacuumGripper(dev, self, state.bodies)
         elif dev.type == "Display":
@@ -221,6 +225,8 @@ class Simulation:
                 motor.update(model, data, ts)
             for gripper in robot.grippers.values():
                 gripper.update(self)
+        for connector in self.connectors:
+            connector.update()
         if self._drags[0] is not model:  # made once per model (a supervisor's recompile makes another)
             self._drags = (model, drags(model, self.table.linear_damping))
         for drag in self._drags[1]:
@@ -279,6 +285,12 @@ class Simulation:
         """Start the random numbers (sensor noise) over, as Webots does at a reset."""
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if self.noise_rng is not None else None
+
+    def gather_connectors(self) -> None:
+        """Every Connector of the world: the robots' (their devices) and those on plain Solids."""
+        self.connectors: list[Connector] = [sensor for robot in self.robots for sensor in robot.sensors.values()
+                                            if isinstance(sensor, Connector)]
+        self.connectors += [Connector(entry, self, frozenset()) for entry in self.table.connectors]
 
     def texture_changed(self, tex: int) -> None:
         """A texture's pixels changed in the model: renderers upload it again, infra-red rays read it again."""
