@@ -91,7 +91,7 @@ Robot {
         Shape {
           appearance PBRAppearance {
             baseColor 1 1 1
-            roughness 1
+            roughness 0.5
             metalness 0
             baseColorMap ImageTexture {
             }
@@ -138,14 +138,14 @@ def test_what_a_display_draws_is_seen_by_infra_red_sensors_and_cameras(display_w
     apply_commands(sim, robot, [(ir, "enable", 16), (camera, "enable", 16)])
     sim.step()
     # Before any drawing the texture is the ImageTexture's own (none: white): the sensor sees white at
-    # 0.495 m (the box's near face), reflection 1.
-    assert robot.sensors[ir].value == pytest.approx(495.0, abs=0.5)
+    # 0.495 m (the box's near face); roughness 0.5 shows infra-red 0.75 of the red: reflection 0.2 + 0.8 · 0.75.
+    assert robot.sensors[ir].value == pytest.approx(495.0 / 0.8, abs=0.5)
     apply_commands(sim, robot, [(display, "setColor", 0x000000), (display, "fillRectangle", 0, 0, 8, 8),
                                 (display, "setColor", 0x808080), (display, "fillRectangle", 2, 2, 4, 4),
                                 (display, "imageSave", None, str(tmp_path / "shot.png"))])
     sim.step()
-    # Red 128/255 at the centre: reflection 0.2 + 0.8 · 0.502 = 0.6016, so 495 / 0.6016 = 822.8.
-    assert robot.sensors[ir].value == pytest.approx(495.0 / (0.2 + 0.8 * 128 / 255), abs=0.5)
+    # Red 128/255 at the centre: reflection 0.2 + 0.8 · 0.75 · 0.502 = 0.5012, so 495 / 0.5012 = 987.6.
+    assert robot.sensors[ir].value == pytest.approx(495.0 / (0.2 + 0.8 * 0.75 * 128 / 255), abs=0.5)
     pixels = robot.sensors[camera].pixels
     centre, corner = pixels[8, 8, 2], pixels[0, 0, 2]  # BGRA: index 2 is red
     assert corner < 5 < centre  # the black border and the grey centre are rendered

@@ -116,6 +116,13 @@ def _pbr_specular(appearance: Node) -> tuple[float, float]:
     return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
+def _infrared_factor(appearance: Node) -> float:
+    """How much of its red a surface shows infra-red sensors beyond its colour: Webots' PBR term 1 − 0.5·roughness."""
+    if appearance.base_type != "PBRAppearance":
+        return 1.0
+    return 1.0 - 0.5 * float(np.clip(float(appearance.get("roughness")), 0.0, 1.0))
+
+
 def _fold_emission(diffuse: np.ndarray, emissive: np.ndarray, alpha: float) -> np.ndarray:
     # MuJoCo's emission scales the rgba itself, so a glowing surface takes the brighter of its
     # diffuse and emissive colours.
@@ -137,7 +144,9 @@ def _texture_repeat(appearance: Node) -> tuple[float, float]:
 
 def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: float, shininess: float,
               path: str | None, repeat: tuple[float, float], node: Node, texture: str | None = None) -> str:
-    key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat)) + (f"|{texture}" if texture else "")
+    infrared = _infrared_factor(node)
+    key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat, round(specular, 4), round(shininess, 4),
+                round(infrared, 4))) + (f"|{texture}" if texture else "")
     name = "mat_" + hashlib.sha1(key.encode()).hexdigest()[:10]
     if ctx.spec.material(name) is not None:
         return name
@@ -148,6 +157,8 @@ def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: 
     material.shininess = shininess
     material.texrepeat = list(repeat)
     material.info = info(node)
+    if infrared != 1.0:
+        ctx.table.infrared[name] = infrared
     if texture is not None:
         material.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = texture
     elif path is not None:

@@ -153,6 +153,7 @@ class DeviceTable:
         initial_velocities: for each body of a Solid with Physics whose `linearVelocity` or
             `angularVelocity` is not zero (by body name), those two vectors in the world's own axes.
         connectors: Connectors outside robots (a docking plate on a plain Solid), as device entries.
+        infrared: materials whose red infra-red sensors see scaled (PBR: 1 − 0.5·roughness), by material name.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -172,6 +173,7 @@ class DeviceTable:
     gps_reference: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     gps_wgs84: bool = False
     connectors: list[DeviceEntry] = field(default_factory=list)
+    infrared: dict[str, float] = field(default_factory=dict)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

@@ -19,6 +19,7 @@ import mujoco
 from wbtc.compile.compiler import CompileResult
 from wbtc.runtime import visibility
 from wbtc.runtime.devices import Emitter, Led, Receiver
+from wbtc.runtime.joint_positions import moved_to_new_position
 from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.poses import dof_width
@@ -57,7 +58,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
     sim.kinematic = {names[old_model.body(b).name]: v for b, v in sim.kinematic.items()
                      if old_model.body(b).name in names}
     sim.rays = RayCaster(model, data)
-    sim.surface = SurfaceColours(model)
+    sim.surface = SurfaceColours(model, result.table.infrared)
     sim.texture_versions = {}  # the new model's textures are as compiled; displays write theirs again
     mujoco.mj_forward(model, data)
     by_node = {id(robot.entry.node): robot for robot in old_robots}
@@ -146,6 +147,8 @@ def _copy_joints(old_model: mujoco.MjModel, old_data: mujoco.MjData, model: mujo
         except KeyError:
             continue
         if old_model.jnt_type[k] != model.jnt_type[j]:
+            continue
+        if moved_to_new_position(old_model, k, model, j):
             continue
         nq = dof_width(model.jnt_type[j], qpos=True)
         nv = dof_width(model.jnt_type[j], qpos=False)

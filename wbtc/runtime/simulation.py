@@ -78,7 +78,7 @@ class Simulation:
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if noise else None
         self.rays = RayCaster(self.model, self.data)
-        self.surface = SurfaceColours(self.model)  # what infra-red rays see where they land
+        self.surface = SurfaceColours(self.model, self.table.infrared)  # what infra-red rays see where they land
         self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
         self.invisible: dict[int, set[int]] = {}  # geoms a camera does not draw (Node.setVisibility): cam -> geoms
         self.hidden: dict[tuple[int, int], tuple[Any, Any]] = {}  # (node, viewer) pairs behind `invisible`

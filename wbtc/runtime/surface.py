@@ -6,7 +6,8 @@ the compiled MuJoCo model, mapped the way MuJoCo (4.x) draws it, so what a Camer
 a ground sensor reads agree:
 
 - the base red is the geom's rgba, or its material's when the geom's is MuJoCo's default grey (the
-  renderer's rule), read at every call so LEDs lit and colours set during the run count;
+  renderer's rule), read at every call so LEDs lit and colours set during the run count; a
+  PBRAppearance's red counts (1 − 0.5·roughness) times, as in Webots;
 - a 2D RGB texture is sampled at the texel under the hit point (nearest texel, repeating), with
   MuJoCo's texture coordinates for the geom type: a finite plane spans the image once from its
   (-x, +y) corner (image top-left) to (+x, -y); an infinite plane repeats every 2 m, shifted by
@@ -47,8 +48,15 @@ class _MeshFaces:
 class SurfaceColours:
     """Red levels of a model's visual surfaces at given points (see the module docstring)."""
 
-    def __init__(self, model: mujoco.MjModel) -> None:
+    def __init__(self, model: mujoco.MjModel, infrared: dict[str, float] | None = None) -> None:
         self.model = model
+        # Webots' PBR term: a rough surface shows infra-red sensors less of its red (1 − 0.5·roughness).
+        self.factor = np.ones(model.nmat)
+        for name, factor in (infrared or {}).items():
+            try:
+                self.factor[model.material(name).id] = factor
+            except KeyError:
+                pass
         self._reds: dict[int, np.ndarray] = {}
         self._means: dict[int, float] = {}
         self._meshes: dict[int, _MeshFaces | None] = {}
@@ -71,7 +79,7 @@ class SurfaceColours:
         # MuJoCo's renderer rule: the geom's own colour, unless it is the default grey (then the material's).
         rgba = model.geom_rgba[geom]
         default = rgba[0] == 0.5 and rgba[1] == 0.5 and rgba[2] == 0.5 and rgba[3] == 1.0
-        base = float(model.mat_rgba[mat, 0] if default else rgba[0])
+        base = float(model.mat_rgba[mat, 0] if default else rgba[0]) * float(self.factor[mat])
         tex = int(model.mat_texid[mat, _RGB])
         if tex < 0:
             return base
