@@ -30,6 +30,7 @@ def init_message(sim: Simulation, robot: RobotState, world: str, project: str) -
                   "basic_time_step": sim.step_ms, "project_path": project, "world_path": world,
                   "supervisor": entry.supervisor, "synchronization": entry.synchronization,
                   "coordinate_system": sim.table.coordinate_system, "webots_version": sim.table.webots_version,
+                  "gps_wgs84": sim.table.gps_wgs84,
                   "differential_wheels": entry.legacy or None},
         "time": sim.time, "devices": devices,
     }

@@ -34,6 +34,7 @@ import numpy as np
 from wbtc.compile.frames import mat_to_quat
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.geodesy import to_wgs84
 from wbtc.runtime.lookup import LookupTable, apply, quantize
 from wbtc.runtime.rays import ray_pattern
 from wbtc.scene.model import Node
@@ -204,13 +205,15 @@ class GPS(Sensor):
         """Position (with accuracy noise) and velocity."""
         pos, _ = self.frame(sim)
         mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, 0)
-        p = sim.from_model @ pos
+        # WGS84 worlds: latitude, longitude, altitude of the model's east-north-up position about gpsReference.
+        p = np.array(to_wgs84(sim.geo_axes @ pos, sim.table.gps_reference)) if sim.table.gps_wgs84 \
+            else sim.from_model @ pos
         if self.accuracy > 0 and sim.noise_rng is not None:
             p = p + sim.noise_rng.normal(0.0, self.accuracy, 3)
         # Webots gives the speed vector in east-north-up order whatever the world's coordinateSystem (an
         # NUE world's velocity (n, u, e) reads (e, n, u)), while positions keep the world's axes: the
         # model frame is ENU, so the model's velocity is that vector as is.
-        v = self._res[3:]
+        v = sim.geo_axes @ self._res[3:]
         return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
 
 

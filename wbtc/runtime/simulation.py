@@ -71,6 +71,7 @@ class Simulation:
         self.to_model = np.asarray(self.table.to_model, dtype=float)
         self.from_model = self.to_model.T
         self.north = np.array([0.0, 1.0, 0.0])  # ENU north (+y), also NUE's north (+x) once rotated
+        self.geo_axes = np.eye(3)  # model frame -> geographic east-north-up (see set_coordinate_system)
         self.time_ms = 0.0
         self.step_ms = float(self.table.basic_time_step)
         self.substeps = int(self.table.substeps)
@@ -285,6 +286,22 @@ class Simulation:
         """Start the random numbers (sensor noise) over, as Webots does at a reset."""
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if self.noise_rng is not None else None
+
+    def set_coordinate_system(self, name: str) -> None:
+        """A supervisor's new `WorldInfo.coordinateSystem`: which world axes are east, north and up from now on.
+
+        Webots does not turn the world; its compasses and WGS84 GPS read the world's axes anew. The
+        geographic east-north-up components of a model vector are its world-axis components picked by
+        the letters' positions in `name` ("ENU", "NUE", "EUN").
+        """
+        name = name.upper()
+        if sorted(name) != ["E", "N", "U"]:
+            return
+        picks = np.zeros((3, 3))
+        for row, letter in enumerate("ENU"):
+            picks[row, name.index(letter)] = 1.0
+        self.geo_axes = picks @ self.from_model
+        self.north = self.geo_axes.T @ np.array([0.0, 1.0, 0.0])
 
     def gather_connectors(self) -> None:
         """Every Connector of the world: the robots' (their devices) and those on plain Solids."""

@@ -352,6 +352,10 @@ class SupervisorHub:
             scene_ops.set_value(tree, ref, index, value)
             if ref.name == "customData" and ref.node.is_a("Robot"):
                 self._push_custom_data(ref.node, str(value))
+            if ref.name == "coordinateSystem" and ref.node.is_a("WorldInfo"):
+                # Webots reads its compasses and WGS84 GPS in the new axes; the world itself does not turn.
+                self.sim.set_coordinate_system(str(value))
+                return
         elif op == "insert":
             scene_ops.insert_value(tree, ref, int(args[0]), args[1])
         elif op == "remove":

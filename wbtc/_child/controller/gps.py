@@ -48,8 +48,8 @@ class GPS(Sensor):
 
     @checked("get_coordinate_system", 0)
     def getCoordinateSystem(self) -> int:
-        """LOCAL or WGS84 (wbtc reports positions in the world frame: LOCAL)."""
-        return GPS.WGS84 if str(self._s.field("coordinateSystem", "local")).upper() == "WGS84" else GPS.LOCAL
+        """LOCAL or WGS84: the world's `WorldInfo.gpsCoordinateSystem`."""
+        return GPS.WGS84 if _session.require().robot.get("gps_wgs84") else GPS.LOCAL
 
     @staticmethod
     def convertToDegreesMinutesSeconds(decimalDegrees: float) -> str:
