@@ -146,7 +146,7 @@ def _replace(tree: SceneTree, old: Node, new: Node) -> None:
 def export_string(node: Node) -> str:
     """`exportString`: the node as VRML (a PROTO instance with its interface values)."""
     if node.proto is None:
-        return format_node(node)
+        return format_node(node, omit_defaults=True)
     model = load_proto(node.proto.source.path)
     head = f"DEF {node.proto.def_name} " if node.proto.def_name else ""
     lines = [f"{head}{node.proto.name} {{"]
@@ -155,7 +155,7 @@ def export_string(node: Node) -> str:
         # An empty MF value (a list, or an empty array for numeric MF fields) is the default: not written.
         if interface is None or value is None or (hasattr(value, "__len__") and len(value) == 0):
             continue
-        lines.append(f"  {name} {format_value(value, interface.type, lambda n: format_node(n, '  '))}")
+        lines.append(f"  {name} {format_value(value, interface.type, lambda n: format_node(n, '  ', True))}")
     lines.append("}")
     return "\n".join(lines)
 
