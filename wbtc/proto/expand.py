@@ -6,8 +6,9 @@ a template, build the body in its own DEF scope, replace every `IS` by the inter
 expand what the body holds (derived PROTOs, nested instances) with the PROTO file's own resolver.
 An unresolved PROTO is a warning and the node is left out (`strict` makes it an error).
 
-Not honoured yet: re-expansion when a field changes at run time (supervisor, issue 7), and the
-`hidden` state lines of instances (saved joint positions and velocities are ignored).
+The `hidden` state lines of instances are applied to the Solids and joints inside them (`hidden`).
+
+Not honoured yet: re-expansion when a field changes at run time (supervisor, issue 7).
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
+from wbtc.proto.hidden import apply_hidden
 from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.scene.build import NodeBuilder
@@ -178,6 +180,8 @@ class Expander:
             made.origin = node.span
             self._link(made, model, values)
         expanded = self.expand(roots[0], proto_resolver)
+        if expanded is not None and node.hidden:
+            apply_hidden(expanded, node.hidden, set(model.fields))
         if expanded is not None:
             info = ProtoInstance(node.type_name, source, values, node.span, node.def_name, expanded.proto)
             expanded.proto = info
