@@ -44,8 +44,9 @@ from wbtc.vrml.header import before_r2022a
 FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
 RUB_IN_FLU = quat_conj(FLU_IN_RUB)
 #: Webots PROTOs that were already built along z before R2022a (old worlds turned them themselves:
-#: Webots' R2020 Mavic world gives its drone `rotation 0 -0.707 -0.707 -3.14159`).
-Z_UP_BEFORE = frozenset({"Mavic2Pro"})
+#: Webots' R2020 Mavic world gives its drone `rotation 0 -0.707 -0.707 -3.14159`; the youBot's old
+#: default rotation was `1 0 0 -1.5708`, which wbtc's Youbot template restores in NUE worlds).
+Z_UP_BEFORE = frozenset({"Mavic2Pro", "Youbot"})
 #: An object's up (z) onto the old y, x kept: a quarter turn about x.
 UP_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
 

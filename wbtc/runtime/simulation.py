@@ -18,6 +18,7 @@ import numpy as np
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
+from wbtc.runtime import conveyors
 from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
@@ -32,6 +33,7 @@ from wbtc.runtime.radar import Radar
 from wbtc.runtime.range_finder import RangeFinder
 from wbtc.runtime.rays import RayCaster
 from wbtc.runtime.sensors import SENSOR_TYPES, Sensor
+from wbtc.runtime.still_joints import StillJoints
 from wbtc.runtime.surface import SurfaceColours
 
 _BADQACC = int(mujoco.mjtWarning.mjWARN_BADQACC)
@@ -88,6 +90,7 @@ class Simulation:
         self.unstable_at: float | None = None  # when MuJoCo first found the physics unstable
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
+        self._still: StillJoints | None = None  # the joints of physics-free trees, per model
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
@@ -221,6 +224,7 @@ class Simulation:
         """Advance one basic time step."""
         ts = self.step_ms / 1000.0
         model, data = self.model, self.data
+        conveyors.drive_belts(self)
         for robot in self.robots:
             for motor in robot.motors.values():
                 motor.update(model, data, ts)
@@ -236,7 +240,12 @@ class Simulation:
             self._move_kinematic(ts)
         for drive in self.drives:
             drive.move(ts)
+        if self._still is None or self._still.model is not model:  # made once per model
+            self._still = StillJoints(model)
+        held = self._still.positions(data) if len(self._still.qpos) else None
         self._integrate(model, data)
+        if held is not None:
+            self._still.restore(data, held)
         for drive in self.drives:
             drive.turn_wheels()
         if self.unstable_at is None:
