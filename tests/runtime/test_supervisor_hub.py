@@ -330,3 +330,53 @@ DEF SUP Robot { supervisor TRUE }
     assert hub.call(sup, "field.get", (name["id"], -1)) == "red box"
     assert hub.call(sup, "node.getProto", (hub.call(sup, "getSelf", ())["id"],)) == []
     sim.close()
+
+
+_PROTO_ARM = """#VRML_SIM R2023b utf8
+PROTO PendulumArm [
+  field SFVec3f translation 0 0 1
+]
+{
+  Robot {
+    translation IS translation
+    children [
+      HingeJoint {
+        jointParameters HingeJointParameters { axis 0 1 0 }
+        endPoint Solid {
+          translation 0.2 0 0
+          children [ Shape { geometry DEF ARM Box { size 0.2 0.02 0.02 } } ]
+          boundingObject USE ARM
+          physics Physics { density -1 mass 1 }
+        }
+      }
+    ]
+    controller "<none>"
+  }
+}
+"""
+
+
+def test_world_save_writes_hidden_lines_of_a_proto_instance(tmp_path):
+    (tmp_path / "PendulumArm.proto").write_text(_PROTO_ARM, encoding="utf-8")
+    world = tmp_path / "pendulum.wbt"
+    world.write_text('#VRML_SIM R2023b utf8\nEXTERNPROTO "PendulumArm.proto"\nWorldInfo { gravity 0 }\n'
+                     'PendulumArm { }\nRobot { name "saver" supervisor TRUE controller "<none>" }\n',
+                     encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub = SupervisorHub(sim, scene, world)
+    hinge = next(j for j in range(sim.model.njnt) if sim.model.jnt_type[j] == 3)
+    sim.data.qpos[sim.model.jnt_qposadr[hinge]] = 0.5
+    sim.step()
+    hub.queue(sim.robots[1], "worldSave", (str(tmp_path / "saved.wbt"),))
+    hub.flush()
+    sim.close()
+    saved = (tmp_path / "saved.wbt").read_text(encoding="utf-8")
+    # Webots' numbering: Solid 0 is the PROTO's Robot, Solid 1 the arm; joint 0 among Solid 0's children.
+    assert "  hidden position_0_0 0.5\n" in saved
+    assert "  hidden rotation_1 0 1 0 0.5\n" in saved
+    assert "hidden translation_0" not in saved  # the interface exposes the root's translation
+    scene2, _ = load_world(tmp_path / "saved.wbt")
+    sim2 = Simulation(compile_scene(scene2), noise=False)
+    assert sim2.data.qpos[sim2.model.jnt_qposadr[hinge]] == pytest.approx(0.5, abs=1e-12)
+    sim2.close()

@@ -85,7 +85,9 @@ def quat_to_axis_angle(q: np.ndarray) -> tuple[float, float, float, float]:
     q = np.asarray(q, dtype=float)
     if q[0] < 0:
         q = -q
-    s = math.sqrt(max(0.0, 1.0 - min(1.0, q[0] * q[0])))
+    # The axis from the vector part itself: a quaternion a rounding off unit length would otherwise
+    # give a tiny angle about an axis of zeros (written "0 0 0 6e-08", which no reader accepts).
+    s = math.sqrt(q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
     angle = 2.0 * math.atan2(s, q[0])
     if s < 1e-12:
         return (0.0, 0.0, 1.0, 0.0)

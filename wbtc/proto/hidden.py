@@ -26,7 +26,7 @@ _JOINTS = ("HingeJoint", "SliderJoint", "Hinge2Joint", "BallJoint")
 
 def apply_hidden(root: Node, hidden: dict[str, Any], exposed: set[str]) -> None:
     """Write an instance's hidden values into its expanded nodes (`exposed`: the PROTO's interface fields)."""
-    solids = _solids(root)
+    solids = solids_of(root)
     for key, raw in hidden.items():
         pose = _POSE.fullmatch(key)
         if pose is not None:
@@ -40,14 +40,14 @@ def apply_hidden(root: Node, hidden: dict[str, Any], exposed: set[str]) -> None:
         axis, index, number = position.group(1) or "", int(position.group(2)), int(position.group(3))
         if index >= len(solids):
             continue
-        joints = [c for c in solids[index].get("children") or [] if isinstance(c, Node) and c.base_type in _JOINTS]
+        joints = joints_of(solids[index])
         if number < len(joints):
             parameters = joints[number].get(f"jointParameters{axis}")
             if isinstance(parameters, Node):
                 _store(parameters, "position", raw)
 
 
-def _solids(root: Node) -> list[Node]:
+def solids_of(root: Node) -> list[Node]:
     """The Solids of an expanded PROTO body in Webots' order: depth first through children and end points."""
     found: list[Node] = []
 
@@ -66,6 +66,11 @@ def _solids(root: Node) -> list[Node]:
 
     visit(root)
     return found
+
+
+def joints_of(solid: Node) -> list[Node]:
+    """The joints among a Solid's children, in order (the J of `position_N_J`)."""
+    return [c for c in solid.get("children") or [] if isinstance(c, Node) and c.base_type in _JOINTS]
 
 
 def _store(node: Node, name: str, raw: Any) -> None:

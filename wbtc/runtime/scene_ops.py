@@ -143,8 +143,13 @@ def _replace(tree: SceneTree, old: Node, new: Node) -> None:
     tree.refresh()
 
 
-def export_string(node: Node) -> str:
-    """`exportString`: the node as VRML (a PROTO instance with its interface values)."""
+def export_string(node: Node, hidden: list[str] | None = None) -> str:
+    """`exportString`: the node as VRML (a PROTO instance with its interface values).
+
+    Args:
+        node: the node (the expanded root of a PROTO instance is written as the instance).
+        hidden: `hidden NAME value` lines to close a PROTO instance with (worldSave's saved state).
+    """
     if node.proto is None:
         return format_node(node, omit_defaults=True)
     model = load_proto(node.proto.source.path)
@@ -156,6 +161,7 @@ def export_string(node: Node) -> str:
         if interface is None or value is None or (hasattr(value, "__len__") and len(value) == 0):
             continue
         lines.append(f"  {name} {format_value(value, interface.type, lambda n: format_node(n, '  ', True))}")
+    lines += [f"  {line}" for line in hidden or []]
     lines.append("}")
     return "\n".join(lines)
 

@@ -7,8 +7,13 @@ values. Solids that move are written where they are, and a Joint's `position` is
 angle or length (with its endPoint where the joint put it), as Webots saves them; the scene itself
 is left as it was.
 
-Not honoured yet: the hidden fields Webots writes for the joints inside a PROTO instance (an
-E-puck's wheels are saved at their initial angles), EXTERNPROTO lines for PROTOs first used by
+A top-level PROTO instance also gets Webots' `hidden` lines for the state its interface does not
+expose (`wbtc.proto.hidden` reads them back): `position_N_J` (and `position2_`, `position3_`) of
+its joints not at 0, and `translation_N`, `rotation_N`, `linearVelocity_N`, `angularVelocity_N`
+of its Solids that move (velocities when not zero).
+
+Not honoured yet: hidden lines of PROTO instances nested in built-in nodes, a BallJoint's
+positions; EXTERNPROTO lines for PROTOs first used by
 nodes a supervisor imported, a Joint whose `jointParameters` is NULL (its position is not saved).
 """
 
@@ -17,9 +22,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from wbtc.proto.hidden import joints_of, solids_of
+from wbtc.proto.model import load_proto
 from wbtc.runtime import poses
 from wbtc.runtime.scene_ops import export_string, store_pose
 from wbtc.scene.model import Node
+from wbtc.vrml.values import format_value
 
 if TYPE_CHECKING:
     from wbtc.runtime.scene_tree import SceneTree
@@ -39,7 +47,7 @@ def save_world(sim: Simulation, tree: SceneTree, source: Path, target: Path) -> 
     undo: list[tuple[Any, str, Any, Any]] = []
     try:
         _live_values(sim, tree, undo)
-        nodes = [export_string(node) for node in tree.visible_children(tree.root)]
+        nodes = [export_string(node, _hidden_lines(sim, node)) for node in tree.visible_children(tree.root)]
     finally:
         for owner, name, field_value, proto_value in reversed(undo):
             if field_value is _ABSENT:
@@ -72,6 +80,41 @@ def _live_values(sim: Simulation, tree: SceneTree, undo: list) -> None:
             joint = int(sim.model.body_jntadr[body]) + index
             _remember(params, "position", undo)
             params.fields["position"] = float(sim.data.qpos[int(sim.model.jnt_qposadr[joint])])
+
+
+def _hidden_lines(sim: Simulation, node: Node) -> list[str]:
+    """The `hidden` lines of a PROTO instance (after `_live_values` put the live state in its nodes)."""
+    if node.proto is None:
+        return []
+    exposed = set(load_proto(node.proto.source.path).fields)
+    lines: list[str] = []
+    for index, solid in enumerate(solids_of(node)):
+        body = poses.solid_body(sim, solid)
+        if body is not None and _moves(sim, body):
+            velocity = poses.velocity(sim, solid)
+            state = (("translation", "SFVec3f", solid.get("translation")),
+                     ("rotation", "SFRotation", solid.get("rotation")),
+                     ("linearVelocity", "SFVec3f", velocity[:3] if any(velocity[:3]) else None),
+                     ("angularVelocity", "SFVec3f", velocity[3:] if any(velocity[3:]) else None))
+            for name, kind, value in state:
+                if value is not None and not (index == 0 and name in exposed):
+                    lines.append(f"hidden {name}_{index} {format_value(value, kind)}")
+        for number, joint in enumerate(joints_of(solid)):
+            for axis, field_name in (("", "jointParameters"), ("2", "jointParameters2"), ("3", "jointParameters3")):
+                params = joint.get(field_name) if joint.schema and joint.schema.field(field_name) else None
+                position = params.get("position") if isinstance(params, Node) else None
+                if position:
+                    lines.append(f"hidden position{axis}_{index}_{number} {format_value(position, 'SFFloat')}")
+    return lines
+
+
+def _moves(sim: Simulation, body: int) -> bool:
+    """Whether a body has a degree of freedom, its own or an ancestor's."""
+    while body > 0:
+        if int(sim.model.body_dofnum[body]):
+            return True
+        body = int(sim.model.body_parentid[body])
+    return False
 
 
 def _remember(node: Node, name: str, undo: list) -> None:
