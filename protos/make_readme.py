@@ -30,9 +30,14 @@ HERE = Path(__file__).resolve().parent
 README = HERE / "README.md"
 FOLDERS = (
     ("robots", "Robots"),
+    ("vehicles", "Vehicles"),
+    ("humans", "Humans"),
+    ("devices", "Devices"),
     ("objects", "Objects and environment"),
     ("appearances", "Appearances"),
 )
+#: Folders whose PROTOs hold devices: each gets a device table.
+WITH_DEVICES = ("robots", "vehicles", "humans", "devices")
 #: Header comment lines that are metadata, not description.
 _META = re.compile(r"^#\s*(VRML_SIM|license|license url|keywords|documentation url|tags|template language)\b", re.I)
 _PREFIX = re.compile(r"^wbtc (object|appearance) library:\s*")
@@ -392,7 +397,7 @@ def entries(folder_name: str, scratch: Path) -> list[Entry]:
         model = load_proto(path)
         entry = Entry(model.name, folder_name, model, header_description(text), interface_rows(model, text))
         entry.base = base_node(model.name, scratch)
-        if folder_name == "robots":
+        if folder_name in WITH_DEVICES:
             entry.devices = robot_devices(model.name, scratch)
             entry.variants = []
             for variant in VARIANTS.get(model.name, []):
@@ -427,20 +432,15 @@ def render(groups: dict[str, list[Entry]]) -> str:
             out.append(f"| {link} | {folder} | {entry.base} | {template_kind(entry.model)} | {len(entry.fields)} |")
     out += ["", COVERAGE, APPROXIMATIONS]
 
-    out += ["## Robots (`protos/robots/`)", "",
-            "Device tables list what `Robot.getDevice` finds in an instance with default values (a part is shown",
-            "inside a bare Robot); positions are in the robot frame (FLU), in metres.", ""]
-    for entry in groups["robots"]:
-        out += [f"### {entry.name}", "", entry.description, ""]
-        if entry.name in ROBOT_NOTES:
-            out += [ROBOT_NOTES[entry.name], ""]
-        out += field_table(entry.fields) + [""]
-        if entry.devices:
-            out += ["| device | type | position | details |", "|---|---|---|---|"]
-            out += [f"| {_cell(n)} | {t} | {p} | {_cell(d)} |" for n, t, p, d in entry.devices]
-            out.append("")
-        for variant in entry.variants or []:
-            out += [variant, ""]
+    for folder, title in FOLDERS:
+        if folder not in WITH_DEVICES or not groups[folder]:
+            continue
+        out += [f"## {title} (`protos/{folder}/`)", ""]
+        if folder == "robots":
+            out += ["Device tables list what `Robot.getDevice` finds in an instance with default values (a part is",
+                    "shown inside a bare Robot); positions are in the robot frame (FLU), in metres.", ""]
+        for entry in groups[folder]:
+            out += _device_section(entry)
 
     out += ["## Objects and environment (`protos/objects/`)", ""]
     for entry in groups["objects"]:
@@ -460,6 +460,21 @@ def render(groups: dict[str, list[Entry]]) -> str:
         out += [f"- **{m.name}**: {re.split(r'; | Same interface as', m.description)[0].rstrip('.')}." for m in members]
         out += [""] + field_table(list(rows)) + [""]
     return "\n".join(out).rstrip() + "\n"
+
+
+def _device_section(entry: Entry) -> list[str]:
+    """One PROTO that holds devices: description, fields, device table and variants."""
+    out = [f"### {entry.name}", "", entry.description, ""]
+    if entry.name in ROBOT_NOTES:
+        out += [ROBOT_NOTES[entry.name], ""]
+    out += field_table(entry.fields) + [""]
+    if entry.devices:
+        out += ["| device | type | position | details |", "|---|---|---|---|"]
+        out += [f"| {_cell(n)} | {t} | {p} | {_cell(d)} |" for n, t, p, d in entry.devices]
+        out.append("")
+    for variant in entry.variants or []:
+        out += [variant, ""]
+    return out
 
 
 def generate() -> str:

@@ -21,7 +21,8 @@ def load_generator():
 
 def test_readme_lists_every_library_proto() -> None:
     readme = (REPO / "protos" / "README.md").read_text(encoding="utf-8")
-    listed = set(re.findall(r"^\| \[?([\w-]+)\]?(?:\(#[\w-]+\))? \| (?:robots|objects|appearances) \|", readme, re.M))
+    folders = "robots|vehicles|humans|devices|objects|appearances"
+    listed = set(re.findall(rf"^\| \[?([\w-]+)\]?(?:\(#[\w-]+\))? \| (?:{folders}) \|", readme, re.M))
     names = {path.stem for path in (REPO / "protos").rglob("*.proto")}
     assert names == listed, "protos/README.md is out of date: run python protos/make_readme.py"
 
