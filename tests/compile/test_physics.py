@@ -315,3 +315,29 @@ def test_substeps_divide_the_basic_time_step(world, options, timestep, substeps)
     assert result.model.opt.timestep == pytest.approx(timestep, abs=1e-15)
     assert result.table.substeps == substeps
     assert result.table.substeps * result.model.opt.timestep * 1000 == pytest.approx(result.table.basic_time_step)
+
+
+_NO_BOUNDS = """#VRML_SIM R2025a utf8
+Solid { translation 0 0 1 name "given mass" physics Physics { density -1 mass 2.5 } }
+Solid { translation 1 0 1 name "density only" physics Physics { } }
+Solid { translation 2 0 1 name "mass over density" boundingObject Box { size 0.1 0.1 0.1 } physics Physics { mass 2 } }
+"""
+
+
+def test_physics_without_bounding_object_uses_webots_default_mass_settings(tmp_path) -> None:
+    # Webots (WbSolid::setDefaultMassSettings): the given mass, else 1 kg, with the identity inertia matrix.
+    world = tmp_path / "bounds.wbt"
+    world.write_text(_NO_BOUNDS, encoding="utf-8")
+    result, _ = compile_world(world)
+    model = result.model
+    assert model.body("given mass").mass[0] == 2.5
+    assert model.body("given mass").inertia.tolist() == [1.0, 1.0, 1.0]
+    assert model.body("density only").mass[0] == 1.0
+    assert model.body("density only").inertia.tolist() == [1.0, 1.0, 1.0]
+    # A mass and the default density 1000: Webots ignores the density.
+    assert model.body("mass over density").mass[0] == 2.0
+    messages = [w.message for w in result.warnings]
+    assert messages == ["Undefined inertia matrix: using the identity matrix. Please specify 'boundingObject' or "
+                        "'inertiaMatrix' values.",
+                        "Mass is invalid because 'boundingObject' is not defined. Using default mass properties: "
+                        "mass = 1, inertia matrix = identity"]

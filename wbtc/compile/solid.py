@@ -324,20 +324,28 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
         return
     volume = sum(p.volume for p in props)
     density, given_mass = float(physics.get("density")), float(physics.get("mass"))
-    if density > 0:
-        mass = density * volume
-    elif given_mass > 0:
-        mass = given_mass
+    matrix = physics.get("inertiaMatrix")
+    custom = matrix is not None and len(matrix) == 2 and given_mass > 0
+    if volume <= 0 and not custom:
+        # Webots' default mass settings for a body without a bounding volume: the given mass (else
+        # 1 kg) with the identity inertia matrix (1 kg m^2 about each axis), and a warning.
+        mass = given_mass if given_mass > 0 else 1.0
+        com, inertia = np.zeros(3), np.eye(3)
+        ctx.warn("Undefined inertia matrix: using the identity matrix. Please specify 'boundingObject' or "
+                 "'inertiaMatrix' values." if given_mass > 0 else
+                 "Mass is invalid because 'boundingObject' is not defined. Using default mass properties: "
+                 "mass = 1, inertia matrix = identity", physics.span)
     else:
-        mass = 0.0
-    if mass <= 0:
-        ctx.warn("this Solid's Physics gives no mass (no bounding volume and no mass); 1 kg is used", physics.span)
-        mass = 1.0
-    com, inertia = _combine(props, mass)
+        mass = density * volume if density > 0 else max(given_mass, 0.0)
+        if given_mass > 0:
+            mass = given_mass  # Webots: with both given, the density is ignored
+        if mass <= 0:
+            ctx.warn("Either the 'mass' or the 'density' must be specified; 1 kg is used", physics.span)
+            mass = 1.0
+        com, inertia = _combine(props, mass)
     com_field = physics.get("centerOfMass")
     if com_field is not None and len(com_field) > 0:
         com = np.asarray(com_field[0], dtype=float)
-    matrix = physics.get("inertiaMatrix")
     if matrix is not None and len(matrix) == 2:
         # Webots writes [I11 I22 I33], [I12 I13 I23]; MuJoCo's fullinertia is xx yy zz xy xz yz.
         body.fullinertia = [*map(float, matrix[0]), *map(float, matrix[1])]
@@ -350,9 +358,8 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
 def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, np.ndarray]:
     """Centre of mass and inertia about it of several geoms sharing one mass in proportion to volume."""
     volume = sum(p.volume for p in props)
-    if volume <= 0:
-        # Physics without a bounding volume: a 5 cm sphere of the given mass stands in.
-        return np.zeros(3), np.eye(3) * 0.4 * mass * 0.05**2
+    if volume <= 0:  # a given inertiaMatrix replaces this
+        return np.zeros(3), np.eye(3)
     density = mass / volume
     com = sum(p.volume * p.com for p in props) / volume
     inertia = np.zeros((3, 3))
