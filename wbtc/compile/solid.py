@@ -191,8 +191,7 @@ class BodyBuilder:
                                                        str(node.get("model") or "")))
         physics = node.get("physics")
         has_physics = isinstance(physics, Node)
-        if has_physics:
-            _initial_velocity(ctx, node, body.name)
+        _initial_velocity(ctx, node, body.name, has_physics)
         top_level = parent is ctx.spec.worldbody
         moves = dynamic or has_physics or joint_frame is not None
         if top_level and has_physics:
@@ -379,13 +378,15 @@ def world_viewpoint(scene: Scene) -> Node | None:
     return next((node for node in scene.nodes if node.base_type == "Viewpoint"), None)
 
 
-def _initial_velocity(ctx: CompileContext, node: Node, body_name: str) -> None:
+def _initial_velocity(ctx: CompileContext, node: Node, body_name: str, has_physics: bool) -> None:
     """Record a Solid's initial `linearVelocity`/`angularVelocity` (world axes) for the runtime to set.
 
     MuJoCo has no per-body initial velocity, so the simulation sets the joint velocities that give
-    this twist when it starts (see `runtime.poses.apply_initial_velocities`).
+    this twist when it starts (`Simulation._start_velocities`). A Solid without Physics is moved
+    kinematically at that velocity, as Webots moves it (and as a supervisor's setVelocity does).
     """
     linear = [float(v) for v in node.get("linearVelocity")]
     angular = [float(v) for v in node.get("angularVelocity")]
     if any(linear) or any(angular):
-        ctx.table.initial_velocities[body_name] = (linear, angular)
+        target = ctx.table.initial_velocities if has_physics else ctx.table.kinematic_velocities
+        target[body_name] = (linear, angular)

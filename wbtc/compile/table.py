@@ -152,6 +152,7 @@ class DeviceTable:
         gps_wgs84: whether WorldInfo.gpsCoordinateSystem is "WGS84".
         initial_velocities: for each body of a Solid with Physics whose `linearVelocity` or
             `angularVelocity` is not zero (by body name), those two vectors in the world's own axes.
+        kinematic_velocities: the same for Solids without Physics: Webots moves them kinematically.
         connectors: Connectors outside robots (a docking plate on a plain Solid), as device entries.
         infrared: materials whose red infra-red sensors see scaled (PBR: 1 − 0.5·roughness), by material name.
     """
@@ -170,6 +171,7 @@ class DeviceTable:
     recognizable: list[Recognizable] = field(default_factory=list)
     radar_targets: list[tuple[str, float]] = field(default_factory=list)  # (body, radarCrossSection) of Solids
     initial_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
+    kinematic_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
     gps_reference: list[float] = field(default_factory=lambda: [0.0, 0.0, 0.0])
     gps_wgs84: bool = False
     connectors: list[DeviceEntry] = field(default_factory=list)

@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 import mujoco
 import numpy as np
 
+from wbtc.compile.context import KINEMATIC_MASS
 from wbtc.compile.frames import mat_to_quat
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry
@@ -193,13 +194,21 @@ class Vector3Sensor(Sensor):
 
 
 class GPS(Sensor):
-    """Position of the device in the world's axes and its velocity in ENU order: [x, y, z, ve, vn, vu]."""
+    """Position of the device in the world's axes and its velocity in ENU order: [x, y, z, ve, vn, vu].
+
+    On a body that physics moves the velocity is the body's. On one that moves only kinematically
+    (no Physics up to the world: a supervisor's setVelocity, a written linearVelocity) Webots knows
+    no body velocity and differences two positions: NaN at the first sample, then the mean velocity
+    since the previous one.
+    """
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
         super().__init__(entry, sim, skip_bodies)
         self.accuracy = float(entry.fields.get("accuracy", 0.0))
         self.resolution = float(entry.fields.get("resolution", -1.0))
         self._res = np.zeros(6)
+        self.dynamic = _moved_by_physics(sim.model, self.body)
+        self._previous: tuple[float, np.ndarray] | None = None  # (time in ms, model position)
 
     def sample(self, sim: Simulation) -> list[float]:
         """Position (with accuracy noise) and velocity."""
@@ -213,8 +222,28 @@ class GPS(Sensor):
         # Webots gives the speed vector in east-north-up order whatever the world's coordinateSystem (an
         # NUE world's velocity (n, u, e) reads (e, n, u)), while positions keep the world's axes: the
         # model frame is ENU, so the model's velocity is that vector as is.
-        v = sim.geo_axes @ self._res[3:]
+        v = sim.geo_axes @ (self._res[3:] if self.dynamic else self._difference(sim.time_ms, pos))
         return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
+
+    def _difference(self, time_ms: float, pos: np.ndarray) -> np.ndarray:
+        """The mean velocity since the previous sample (NaN at the first one)."""
+        previous, self._previous = self._previous, (time_ms, np.array(pos))
+        if previous is None or time_ms <= previous[0]:
+            return np.full(3, math.nan)
+        return (pos - previous[1]) * 1000.0 / (time_ms - previous[0])
+
+
+def _moved_by_physics(model: mujoco.MjModel, body: int) -> bool:
+    """Whether a body or one of its ancestors has a degree of freedom with a real mass behind it.
+
+    Bodies of Solids without Physics that sit on joints weigh `KINEMATIC_MASS` (MuJoCo needs some):
+    those, and bodies without joints, only move kinematically.
+    """
+    while body > 0:
+        if int(model.body_dofnum[body]) and float(model.body_mass[body]) > KINEMATIC_MASS * (1 + 1e-9):
+            return True
+        body = int(model.body_parentid[body])
+    return False
 
 
 class Altimeter(Sensor):

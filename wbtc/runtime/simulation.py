@@ -106,13 +106,17 @@ class Simulation:
         self.drives = [DriveState(r.entry.drive, self, r) for r in self.robots if r.entry.drive is not None]
 
     def _start_velocities(self) -> None:
-        """Start each Solid with Physics at its written `linearVelocity`/`angularVelocity`.
+        """Start each Solid at its written `linearVelocity`/`angularVelocity` (without Physics: kinematically).
 
         The fields are the body's twist in world axes (linear: of its centre of mass, as ODE's bodies).
         The body's own joints get the velocities that come closest to it (least squares over the body's
         degrees of freedom: exact for a free joint, the projection on the axis for a hinge or slider).
         """
         model, data = self.model, self.data
+        for name, (linear, angular) in self.table.kinematic_velocities.items():
+            # Without Physics: moved kinematically (world axes to the model's ENU axes).
+            self.kinematic[model.body(name).id] = (self.to_model @ np.asarray(linear, float),
+                                                   self.to_model @ np.asarray(angular, float))
         if not self.table.initial_velocities:
             return
         jacp, jacr = np.zeros((3, model.nv)), np.zeros((3, model.nv))
