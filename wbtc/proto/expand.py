@@ -315,8 +315,11 @@ class Expander:
         # Webots re-generates a template only when a field it reads changes: the text depends on the
         # fields the template names (and the context), so instances that agree on those share it.
         read = _fields_read(model.syntax.template)
+        # Everything the template can read is in the key: the fields it names and the whole context (the
+        # world's version, axes and paths), the instance id only when the template reads it.
+        shared = {k: v for k, v in context.items() if k != "id"}
         key = (model.path, json.dumps({k: v for k, v in fields.items() if k in read}, sort_keys=True, default=str),
-               context["coordinate_system"], "context.id" in model.syntax.template and context["id"])
+               json.dumps(shared, sort_keys=True, default=str), "context.id" in model.syntax.template and context["id"])
         cached = _RENDERED.get(key)
         if cached is not None:
             return parse_body(cached, str(model.path), span.line, span.column)
