@@ -25,7 +25,7 @@ from wbtc.errors import Diagnostic, SchemaError, Span
 from wbtc.scene.model import Node, Scene
 from wbtc.schema.registry import FieldSchema, node_schema, suggest
 from wbtc.vrml import syntax as s
-from wbtc.vrml.header import R2020B, R2022A, R2022B, Version
+from wbtc.vrml.header import R2020B, R2022B, Version, before_r2022a
 from wbtc.vrml.values import coerce, format_value
 
 #: Errors reported before the builder gives up on a file.
@@ -227,7 +227,7 @@ def build_scene(syntax: s.FileSyntax) -> Scene:
     if builder.errors:
         raise SchemaError("", diagnostics=builder.errors)
     scene = Scene(syntax.path, version, syntax.info, nodes, syntax.externprotos, syntax.protos,
-                  _coordinate_system(nodes, version), version < R2022A, version < R2022B, builder.count,
+                  _coordinate_system(nodes, version), before_r2022a(version), version < R2022B, builder.count,
                   list(syntax.warnings) + builder.warnings)
     return scene
 

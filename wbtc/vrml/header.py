@@ -71,8 +71,13 @@ R2023B = Version(2023, 1, 0, "R2023b")  # Pose node
 
 
 def before_r2022a(version: Version | None) -> bool:
-    """True for a file written before R2022a: Webots' primitives and PROTOs then stood along y."""
-    return version is not None and version < R2022A
+    """True for a file written with the old axes: Webots' primitives and PROTOs then stood along y.
+
+    Webots' backward-compatibility fix (WbNodeUtilities::fixBackwardCompatibility) applies to files
+    up to R2021b: "R2021c" was the development name of R2022a, whose files (Webots' own test worlds
+    among them) already hold FLU objects, even in an NUE world.
+    """
+    return version is not None and version.key() <= (2021, 1)
 
 
 def read_header(text: str, path: str) -> tuple[Version, list[str]]:
