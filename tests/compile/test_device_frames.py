@@ -74,8 +74,8 @@ def test_a_merged_led_lights_only_its_own_shapes(compiled):
 
 
 def test_joint_devices_come_before_their_end_point_devices_as_in_webots(tmp_path):
-    # getDeviceByIndex order: a Joint's `device` field comes before its `endPoint`, a Hinge2Joint's
-    # `device2` after it (the fields' order in Webots' node definitions).
+    # getDeviceByIndex order (WbRobot::addDevices): a Joint's devices, every axis's (WbHinge2Joint::devices:
+    # `device` then `device2`), come before what its `endPoint` holds.
     world = tmp_path / "order.wbt"
     world.write_text("""#VRML_SIM R2025a utf8
 Robot {
@@ -98,4 +98,4 @@ Robot {
 }
 """, encoding="utf-8")
     result, _ = compile_world(world)
-    assert [d.name for d in result.table.robots[0].devices] == ["m1", "inner sensor", "tip", "m2", "led"]
+    assert [d.name for d in result.table.robots[0].devices] == ["m1", "m2", "inner sensor", "tip", "led"]

@@ -82,9 +82,9 @@ def test_options_add_the_mirror_cameras_and_remove_the_interior(tmp_path: Path):
                                 "  rightWingMirror TRUE\n  rearMirror TRUE")
     names = [d.name for d in result.table.robots[0].devices]
     assert names[len(WHEELS + REAR) + 1 + len(SLOTS) + len(LIGHTS):] == [
-        "right_wing_display", "left_wing_display", "left_wing_yaw_mirror_motor", "left_wing_camera",
-        "left_wing_pitch_mirror_motor", "right_wing_yaw_mirror_motor", "right_wing_camera",
-        "right_wing_pitch_mirror_motor", "rear_yaw_mirror_motor", "rear_camera", "rear_pitch_mirror_motor"]
+        "right_wing_display", "left_wing_display", "left_wing_yaw_mirror_motor", "left_wing_pitch_mirror_motor",
+        "left_wing_camera", "right_wing_yaw_mirror_motor", "right_wing_pitch_mirror_motor", "right_wing_camera",
+        "rear_yaw_mirror_motor", "rear_pitch_mirror_motor", "rear_camera"]
 
 
 def test_masses_slots_and_it_rests_on_its_wheels_and_springs(tmp_path: Path):

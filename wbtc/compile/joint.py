@@ -22,7 +22,7 @@ import numpy as np
 
 from wbtc.compile import device
 from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, info
-from wbtc.compile.frames import Frame, quat_conj, quat_rotate
+from wbtc.compile.frames import Frame, axis_angle_quat, quat_conj, quat_rotate, quat_to_mat
 from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
 from wbtc.schema.registry import node_schema
@@ -65,13 +65,13 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
     mark = len(robot.devices) if robot is not None else 0
     child = builder.add_solid(end, body, frame, robot, dynamic, joint_frame=frame)
     below = len(robot.devices) if robot is not None else 0
-    first_count = _add_joints(builder, node, kind, child, frame, robot, first, first_type)
+    count = _add_joints(builder, node, kind, child, frame, robot, first, first_type)
     if robot is not None:
-        # Webots lists a joint's `device`s before its endPoint's devices (the field comes first; a
-        # Hinge2Joint's `device2` comes after): the order of getDeviceByIndex. They can only be made
-        # once the endPoint's body exists, so they are moved into place.
-        own = robot.devices[below:below + first_count]
-        del robot.devices[below:below + first_count]
+        # Webots lists a joint's devices before its endPoint's devices, every axis's (`device`, then
+        # `device2`, `device3`: WbHinge2Joint::devices) ahead of what the endPoint holds: the order of
+        # getDeviceByIndex. They can only be made once the endPoint's body exists, so they are moved.
+        own = robot.devices[below:below + count]
+        del robot.devices[below:below + count]
         robot.devices[mark:mark] = own
 
 
@@ -100,7 +100,7 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
     """The MuJoCo joint(s) of a Joint node on its endPoint's body, with their devices.
 
     Returns:
-        How many devices the first axis (the `device` field) gave the robot.
+        How many devices the joint's axes (`device`, `device2`, `device3`) gave the robot.
     """
     ctx = builder.ctx
     child_pose = Frame(np.asarray(child.pos, dtype=float), np.asarray(child.quat, dtype=float), np.ones(3))
@@ -124,12 +124,14 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
     else:
         axes.append((first, first_type, "device", np.asarray(param(first, first_type, "axis"), dtype=float)))
     if kind == "Hinge2Joint":
+        # The second axis turns with the first: the endPoint is written at the first axis's
+        # `position`, so at the reference pose the second axis is already turned by it (Webots' axis2).
         second = node.get("jointParameters2")
+        turn = axis_angle_quat(axes[0][3], float(param(first, first_type, "position")))
         axes.append((second, "JointParameters", "device2",
-                     np.asarray(param(second, "JointParameters", "axis"), dtype=float)))
+                     quat_to_mat(turn) @ np.asarray(param(second, "JointParameters", "axis"), dtype=float)))
     joint_type = mujoco.mjtJoint.mjJNT_SLIDE if kind == "SliderJoint" else mujoco.mjtJoint.mjJNT_HINGE
     start = len(robot.devices) if robot is not None else 0
-    first_count = 0
     for index, (params, params_type, device_field, local_axis) in enumerate(axes, start=1):
         axis = frame.rotate(local_axis)
         joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
@@ -141,9 +143,7 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
                 device.add_joint_device(dev, joint, child, robot, ctx, position, index)
                 if kind == "BallJoint" and index == 2:
                     _limit_middle_motor(robot.devices[-1], dev)
-        if index == 1 and robot is not None:
-            first_count = len(robot.devices) - start
-    return first_count
+    return len(robot.devices) - start if robot is not None else 0
 
 
 def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjtJoint, child_pose: Frame,
