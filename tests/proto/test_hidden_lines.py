@@ -5,7 +5,10 @@ from pathlib import Path
 import pytest
 
 from wbtc.pipeline import compile_world
+from wbtc.proto.hidden import joints_of, solids_of
 from wbtc.runtime.simulation import Simulation
+from wbtc.scene.build import build_scene
+from wbtc.vrml.parser import parse_text
 
 PROTO = """#VRML_SIM R2025a utf8
 PROTO TwoWheels [
@@ -75,3 +78,20 @@ def test_hidden_joint_positions_and_inner_poses_are_applied(tmp_path: Path):
     assert [float(data.qpos[model.jnt_qposadr[j]]) for j in joints] == pytest.approx([0.0, 0.25])
     left = next(b for b in range(model.nbody) if model.body(b).name.endswith("left"))
     assert data.xpos[left] == pytest.approx([0.1, 0.0, 1.05])
+
+
+def test_joints_inside_grouping_nodes_and_solids_behind_slots_are_counted() -> None:
+    # Webots counts a Solid's joints through Pose/Transform/Group children (never inside another Solid),
+    # and its Solids through Slot end points, as Car's wheels are.
+    text = """#VRML_SIM R2025a utf8
+Robot {
+  children [
+    Pose { children [ DEF A HingeJoint { endPoint Slot { endPoint Solid { name "w" } } } ] }
+    Solid { name "inner" children [ DEF B SliderJoint { } ] }
+    DEF C HingeJoint { }
+  ]
+}
+"""
+    robot = build_scene(parse_text(text, "t.wbt")).nodes[0]
+    assert [j.def_name for j in joints_of(robot)] == ["A", "C"]
+    assert [str(s.get("name")) for s in solids_of(robot)] == ["robot", "w", "inner"]

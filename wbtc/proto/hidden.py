@@ -54,7 +54,7 @@ def solids_of(root: Node) -> list[Node]:
     def visit(node: Node) -> None:
         if node.is_a("Solid"):
             found.append(node)
-        if node.base_type in _JOINTS:
+        if node.base_type in _JOINTS or node.base_type == "Slot":  # a Slot passes its endPoint on too
             end = node.get("endPoint")
             if isinstance(end, Node):
                 visit(end)
@@ -69,8 +69,24 @@ def solids_of(root: Node) -> list[Node]:
 
 
 def joints_of(solid: Node) -> list[Node]:
-    """The joints among a Solid's children, in order (the J of `position_N_J`)."""
-    return [c for c in solid.get("children") or [] if isinstance(c, Node) and c.base_type in _JOINTS]
+    """The joints of a Solid, in order (the J of `position_N_J`).
+
+    As Webots counts them: among its children and inside the grouping nodes (Pose, Transform, Group)
+    among them, depth first, never inside another Solid.
+    """
+    found: list[Node] = []
+
+    def visit(children: Any) -> None:
+        for child in children or []:
+            if not isinstance(child, Node) or child.is_a("Solid"):
+                continue
+            if child.base_type in _JOINTS:
+                found.append(child)
+            elif child.schema is not None and child.schema.field("children") is not None:
+                visit(child.get("children"))
+
+    visit(solid.get("children"))
+    return found
 
 
 def _store(node: Node, name: str, raw: Any) -> None:
