@@ -34,8 +34,9 @@ def test_compile_writes_textures_beside_the_mjcf(tmp_path: Path) -> None:
     assert len(list((tmp_path / "lights_assets").glob("*.png"))) == 1
     model = mujoco.MjModel.from_xml_path(str(out))
     assert model.ntex == 2  # the sky and the checker texture
-    # Every appearance has a material (its highlight): a Material box, two PBR spheres, the checker box.
-    assert model.nmat == 4
+    # Every shape has a material (its highlight, its share of the ambient light): a Material box, two PBR
+    # spheres, the checker box and the shape without appearance.
+    assert model.nmat == 5
     assert int((model.mat_texid[:, int(mujoco.mjtTextureRole.mjTEXROLE_RGB)] >= 0).sum()) == 1
 
 

@@ -10,7 +10,11 @@ the spec's in-memory assets. Emissive colours are folded into the rgba with the 
 Highlights: a Material's `specularColor` (its mean: MuJoCo has one level) and `shininess`; a
 PBRAppearance's from roughness and metalness (`_pbr_specular`).
 
-Not honoured yet: Material `ambientIntensity`, a coloured specular; PBRAppearance maps other than
+Ambient light (`world.set_ambient`): a Phong Material is lit by the lights' ambientIntensity × its
+own `ambientIntensity`, a PBRAppearance (or a shape without Material) by the Background; MuJoCo
+has one ambient for all, so each material's `ambient_roles` entry lets its emission make up the rest.
+
+Not honoured yet: a coloured specular; PBRAppearance maps other than
 `baseColorMap` (roughness, metalness, normal, occlusion, emissive maps), `IBLStrength`;
 TextureTransform `center`, `rotation` and `translation` on primitives (a mesh's texture coordinates
 carry the whole transform: `geometry._mesh`); ImageTexture `filtering`.
@@ -37,7 +41,9 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
     """The rgba, MuJoCo material name and texture image path of a Shape's appearance."""
     appearance = shape.get("appearance")
     if not isinstance(appearance, Node):
-        return DEFAULT_RGBA.copy(), None, None
+        # A material all the same: the Background's ambient reaches it through its emission.
+        name = _material(ctx, DEFAULT_RGBA.copy(), 0.0, 0.5, 0.5, None, (1.0, 1.0), shape)
+        return DEFAULT_RGBA.copy(), name, None
     ctx.unhonoured(appearance, _UNHONOURED)
     if appearance.base_type == "PBRAppearance":
         rgba, emission, texture_node = _pbr(appearance)
@@ -116,6 +122,12 @@ def _pbr_specular(appearance: Node) -> tuple[float, float]:
     return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
+def _ambient_role(node: Node) -> float | None:
+    """A Phong Material's ambientIntensity; None for what the Background lights (PBR, no Material)."""
+    material = node.get("material") if node.base_type == "Appearance" else None
+    return float(material.get("ambientIntensity")) if isinstance(material, Node) else None
+
+
 def _infrared_factor(appearance: Node) -> float:
     """How much of its red a surface shows infra-red sensors beyond its colour: Webots' PBR term 1 − 0.5·roughness."""
     if appearance.base_type != "PBRAppearance":
@@ -145,8 +157,9 @@ def _texture_repeat(appearance: Node) -> tuple[float, float]:
 def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: float, shininess: float,
               path: str | None, repeat: tuple[float, float], node: Node, texture: str | None = None) -> str:
     infrared = _infrared_factor(node)
+    ambient = _ambient_role(node)
     key = repr((np.round(rgba, 4).tolist(), round(emission, 4), path, repeat, round(specular, 4), round(shininess, 4),
-                round(infrared, 4))) + (f"|{texture}" if texture else "")
+                round(infrared, 4), ambient)) + (f"|{texture}" if texture else "")
     name = "mat_" + hashlib.sha1(key.encode()).hexdigest()[:10]
     if ctx.spec.material(name) is not None:
         return name
@@ -157,6 +170,7 @@ def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: 
     material.shininess = shininess
     material.texrepeat = list(repeat)
     material.info = info(node)
+    ctx.ambient_roles[name] = ambient
     if infrared != 1.0:
         ctx.table.infrared[name] = infrared
     if texture is not None:

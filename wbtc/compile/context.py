@@ -54,6 +54,9 @@ class CompileContext:
     texture_paths: dict[str, str] = field(default_factory=dict)
     display_textures: dict[int, object] = field(default_factory=dict)  # id(ImageTexture) -> its Display's entry
     led_lights: list[tuple[str, float, float]] | None = None  # collects an LED's lights while its children are walked
+    #: For each MuJoCo material: its Phong Material's ambientIntensity, or None for a PBRAppearance or a
+    #: shape without Material (lit by the Background); `world.set_ambient` turns it into emission.
+    ambient_roles: dict[str, float | None] = field(default_factory=dict)
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)
     _versions: dict[str, Version | None] = field(default_factory=dict)

@@ -34,6 +34,7 @@ import numpy as np
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.device import CAMERA_QUAT
 from wbtc.compile.frames import IDENTITY_QUAT, NUE_TO_ENU, NUE_TO_ENU_QUAT, Frame, axis_angle_quat, quat_mul
+from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
@@ -116,20 +117,33 @@ def add_background(node: Node, ctx: CompileContext) -> None:
 
 
 def set_ambient(background: Node | None, ctx: CompileContext) -> None:
-    """The global ambient light (MuJoCo's headlight) standing for Webots' Background lighting; see the docstring."""
+    """Ambient light per material, standing for Webots' light ambients and Background lighting.
+
+    MuJoCo lights every geom with one ambient: the headlight's plus each light's (a light's ambient is
+    colour × ambientIntensity × 0.2, what a default Phong Material sees). Webots lights a Phong
+    Material by Σ light ambientIntensity × its own ambientIntensity (no Background), a PBRAppearance
+    (or a shape without Material) by the Background's image light. So the headlight's ambient is 0 and
+    each material's emission (which MuJoCo multiplies by its colour, as an ambient term) makes up the
+    difference from the lights' shared ambient (never below 0).
+    """
     headlight, lights = ctx.spec.visual.headlight, list(ctx.spec.lights)
     if background is None and not lights:
-        return
+        return  # nothing lights the world: MuJoCo's own headlight shows it
+    headlight.ambient = [0.0, 0.0, 0.0]
+    headlight.diffuse = [0.0, 0.0, 0.0]
+    headlight.specular = [0.0, 0.0, 0.0]
     sky = background.get("skyColor") if background is not None else None
     if sky is not None and len(sky) > 0:
         level = max(float(background.get("luminosity")), 0.0) * float(np.mean(np.clip(sky[0], 0.0, None)))
-        image_light = np.full(3, (1.0 - math.exp(-level)) ** (1 / 2.2))
+        image_light = (1.0 - math.exp(-level)) ** (1 / 2.2)
     else:
-        image_light = np.zeros(3)
-    own = np.sum([np.asarray(light.ambient, dtype=float) for light in lights], axis=0) if lights else np.zeros(3)
-    headlight.ambient = np.clip(image_light - own, 0.0, 1.0)
-    headlight.diffuse = [0.0, 0.0, 0.0]
-    headlight.specular = [0.0, 0.0, 0.0]
+        image_light = 0.0
+    own = float(np.mean(np.sum([np.asarray(light.ambient, dtype=float) for light in lights], axis=0))) \
+        if lights else 0.0
+    for name, role in ctx.ambient_roles.items():
+        target = image_light if role is None else own / MATERIAL_AMBIENT * role
+        material = ctx.spec.material(name)
+        material.emission = float(np.clip(material.emission + max(target - own, 0.0), 0.0, 1.0))
 
 
 def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
