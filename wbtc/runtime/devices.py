@@ -191,7 +191,7 @@ class Camera(Sensor):
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
-        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near)
+        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near, spots=sim.laser_spots())
         pixels = self._image()
         if self.noise > 0 and sim.noise_rng is not None:
             # Webots: σ = noise × 255 on every channel, independently per pixel and per sample.

@@ -30,6 +30,10 @@ import numpy as np
 _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
 
 
+#: The laser spot as Webots' cameras show it (an emissive red, 0xEF after their tone mapping).
+_SPOT_RGBA = np.array([239 / 255, 0.0, 0.0, 1.0], dtype=np.float32)
+
+
 def _gl_context(width: int, height: int) -> object:
     """An OpenGL context for offscreen images.
 
@@ -122,7 +126,8 @@ class Offscreen:
         return metres
 
     def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
-             pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None) -> np.ndarray:
+             pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None,
+             spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None) -> np.ndarray:
         """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
 
         Args:
@@ -131,6 +136,7 @@ class Offscreen:
             near: near clipping distance in metres (None: MuJoCo's).
             far: far clipping distance in metres (None: MuJoCo's).
             pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
+            spots: laser spots to draw (centre, surface normal, radius), as Webots' cameras see them.
 
         Returns:
             The RGB pixels, rows from the **bottom**; overwritten by the next `draw`.
@@ -167,6 +173,8 @@ class Offscreen:
                 groups[culled] = kept
             if saved is not None:
                 data.cam_xpos[camera], data.cam_xmat[camera] = saved
+        for centre, normal, radius in spots or []:
+            self._add_spot(centre, normal, radius)
         if near is not None and near > 0:
             for glcam in self.scene.camera:
                 scale = near / glcam.frustum_near
@@ -182,6 +190,30 @@ class Offscreen:
         mujoco.mjr_render(self.rect, self.scene, self.context)
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
         return self.pixels
+
+    def _add_spot(self, centre: np.ndarray, normal: np.ndarray, radius: float) -> None:
+        """A laser's red disc in the scene, facing along `normal`.
+
+        Webots draws it emissive red; its cameras show that, after their tone mapping, as (239, 0, 0):
+        wbtc has no tone mapping, so the disc glows in that colour.
+        """
+        scene = self.scene
+        if scene.ngeom >= scene.maxgeom:
+            return
+        z = np.asarray(normal, dtype=float) / max(float(np.linalg.norm(normal)), 1e-12)
+        helper = np.array([1.0, 0.0, 0.0]) if abs(z[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+        x = np.cross(helper, z)
+        x /= np.linalg.norm(x)
+        mat = np.column_stack([x, np.cross(z, x), z])
+        geom = scene.geoms[scene.ngeom]
+        mujoco.mjv_initGeom(geom, mujoco.mjtGeom.mjGEOM_CYLINDER, np.array([radius, radius, 1e-5]),
+                            np.asarray(centre, dtype=float), mat.reshape(9), _SPOT_RGBA)
+        # Glowing at its colour: the emission makes up what the scene's ambient light does not give.
+        lit = self.model.light_active.astype(bool)
+        ambient = float(self.model.light_ambient[lit].sum(axis=0).mean()) if lit.any() else 0.0
+        ambient += float(np.mean(self.model.vis.headlight.ambient)) if self.model.vis.headlight.active else 0.0
+        geom.emission = max(0.0, 1.0 - ambient)
+        scene.ngeom += 1
 
     def _outside(self, data: mujoco.MjData, camera: int, near: float) -> np.ndarray:
         """The geoms whose bounding spheres are wholly outside the camera's view pyramid."""

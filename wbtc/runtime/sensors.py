@@ -103,6 +103,9 @@ class DistanceSensor(Sensor):
         # scalars at every sample costs more than the ray cast itself.
         self.rays = [(direction, float(weight)) for direction, weight in zip(dirs, weights, strict=True)]
         self.range = self.table.max_input
+        self.aperture = float(f.get("aperture", 1.5708))
+        #: A laser's red spot where it hits (centre, surface normal towards the sensor, radius), for cameras.
+        self.spot: tuple[np.ndarray, np.ndarray, float] | None = None
 
     def sample(self, sim: Simulation) -> float:
         """Distance from the rays, then the lookup table."""
@@ -120,6 +123,8 @@ class DistanceSensor(Sensor):
             if sonar and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
                 dist = math.inf
             hit = math.isfinite(dist)
+            if self.kind == "laser":
+                self.spot = _laser_spot(pos, world_dir, dist, sim.rays.normal, self.aperture) if hit else None
             nearest = min(nearest, dist)
             d = dist if hit else self.range
             # Infra-red: dark surfaces reflect less and look farther (reflection 0.2 + 0.8 red), the red
@@ -131,6 +136,24 @@ class DistanceSensor(Sensor):
         distance = (nearest if math.isfinite(nearest) else self.range) if self.kind in ("sonar", "laser") \
             else num / den
         return apply(self.table, distance, sim.noise_rng, self.resolution)
+
+
+def _laser_spot(pos: np.ndarray, direction: np.ndarray, dist: float, normal: np.ndarray,
+                aperture: float) -> tuple[np.ndarray, np.ndarray, float] | None:
+    """Webots' laser spot, or None when there is none.
+
+    A disc of radius `aperture` on the surface, drawn when the beam meets it within 80° (1.3963 rad)
+    of its normal, 0.5 mm towards the sensor (lineScale 0.1 / 200) so that it is not hidden in it.
+    """
+    if aperture <= 0:
+        return None
+    towards = -np.asarray(direction, dtype=float)
+    facing = np.array(normal, dtype=float)  # a copy: the ray caster reuses its normal buffer
+    if float(facing @ towards) < 0:  # the normal may point into the surface: turn it out
+        facing = -facing
+    if math.acos(min(1.0, float(facing @ towards) / max(float(np.linalg.norm(facing)), 1e-12))) >= 1.3963:
+        return None
+    return np.asarray(pos, dtype=float) - towards * dist + towards * 0.0005, facing, aperture
 
 
 class PositionSensor(Sensor):

@@ -286,6 +286,10 @@ class Simulation:
             robot.last_pos = pos
         self.keys_down = []
 
+    def laser_spots(self) -> list[tuple[np.ndarray, np.ndarray, float]]:
+        """The red spots of the laser DistanceSensors that hit something at their last sample."""
+        return [s.spot for r in self.robots for s in r.sensors.values() if getattr(s, "spot", None) is not None]
+
     def _report_instability(self) -> None:
         """Say once that the physics blew up: MuJoCo then puts the whole state back to its start."""
         self.unstable_at = (self.time_ms + self.step_ms) / 1000.0  # the step that just ran
