@@ -380,3 +380,24 @@ def test_world_save_writes_hidden_lines_of_a_proto_instance(tmp_path):
     sim2 = Simulation(compile_scene(scene2), noise=False)
     assert sim2.data.qpos[sim2.model.jnt_qposadr[hinge]] == pytest.approx(0.5, abs=1e-12)
     sim2.close()
+
+
+def test_reset_physics_stops_a_motor_slowing_down_under_its_acceleration(tmp_path):
+    # Webots resets the motors of the joints it stops: a motor braking at its `acceleration` does not
+    # pick the joint up again at the speed its ramp had reached.
+    sim, hub, arm, shoulder = _arm_supervisor(tmp_path)
+    motor = next(iter(arm.motors.values()))
+    motor.apply("setAcceleration", (10.0,))
+    motor.apply("setPosition", (float("inf"),))
+    motor.apply("setVelocity", (5.0,))
+    for _ in range(40):
+        sim.step()
+    motor.apply("setVelocity", (0.0,))
+    sim.step()
+    joint = sim.model.joint(sim.table.robots[0].device("shoulder").joint)
+    assert abs(float(sim.data.qvel[joint.dofadr[0]])) > 3.0  # still braking from 5 rad/s at 10 rad/s²
+    hub.queue(arm, "node.resetPhysics", (hub.call(arm, "getSelf", ())["id"],))
+    hub.flush()
+    sim.step()
+    assert abs(float(sim.data.qvel[joint.dofadr[0]])) < 0.05
+    sim.close()

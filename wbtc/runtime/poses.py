@@ -187,6 +187,13 @@ def reset_physics(sim: Simulation, node: Node | None) -> None:
                 width = dof_width(int(model.jnt_type[jnt]))
                 data.qvel[adr:adr + width] = 0.0
                 data.qacc_warmstart[adr:adr + width] = 0.0
+    # Webots also stops the motors of those joints where their acceleration ramp was: a motor slowing
+    # down under `acceleration` does not pick the joint up again at its old speed.
+    for robot in sim.robots:
+        for motor in robot.motors.values():
+            dof = getattr(motor, "dof_adr", None)
+            if dof is not None and hasattr(motor, "command") and descends(model, int(model.dof_bodyid[dof]), body):
+                motor.command = 0.0
     mujoco.mj_forward(model, data)  # so that velocity queries before the next step see it
 
 
