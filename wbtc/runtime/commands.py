@@ -133,6 +133,8 @@ def _robot_command(robot: RobotState, op: str, args: tuple, now: float) -> None:
         robot.keyboard_due = now + robot.keyboard_period if robot.keyboard_period > 0 else math.inf
     elif op == "keyboardDisable":
         robot.keyboard_period, robot.keyboard_due = 0, math.inf
+    elif op in ("batterySensorEnable", "batterySensorDisable") and robot.battery is not None:
+        robot.battery.enable(int(args[0]) if op == "batterySensorEnable" else 0, now)
 
 
 def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
@@ -150,6 +152,9 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if robot.keys is not None:
         message["keys"] = robot.keys
         robot.keys = None
+    if robot.battery is not None and robot.battery.value is not None:
+        message["battery"] = robot.battery.value
+        robot.battery.value = None
     if robot.custom_data_pushed:
         message["custom_data"] = robot.custom_data
         robot.custom_data_pushed = False

@@ -68,6 +68,7 @@ class Motor:
         self.feedback_due = math.inf
         self.feedback_value: float | None = None  # sampled since the last reply, else None
         self.step_force: float | None = None  # the mean force of the last step, when feedback is on
+        self.metered = False  # a battery counts this motor's effort: keep its mean force per step too
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
 

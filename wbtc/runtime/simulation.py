@@ -19,6 +19,7 @@ from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime import conveyors
+from wbtc.runtime.battery import Battery
 from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
@@ -58,6 +59,7 @@ class RobotState:
     custom_data: str = ""
     custom_data_pushed: bool = False  # a supervisor wrote customData: the next reply tells the controller
     announced: int | None = None  # how many devices the controller knows (None: no controller has started)
+    battery: Battery | None = None
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
 
@@ -141,7 +143,7 @@ class Simulation:
         (a servo reaching its velocity in the first substep would otherwise read almost 0).
         """
         motors = [m for r in self.robots for m in r.motors.values()
-                  if isinstance(m, Motor) and m.feedback_period > 0]
+                  if isinstance(m, Motor) and (m.feedback_period > 0 or m.metered)]
         if not motors:
             mujoco.mj_step(model, data, nstep=self.substeps)
             return
@@ -185,6 +187,7 @@ class Simulation:
         for tag, dev in enumerate(entry.devices):
             self._device(state, tag, dev)
         state.last_pos = self.data.xpos[body].tolist()
+        state.battery = Battery(entry.node, state.motors)
         return state
 
     def _device(self, state: RobotState, tag: int, dev: DeviceEntry) -> None:
@@ -278,6 +281,9 @@ class Simulation:
             for motor in robot.motors.values():
                 if motor.feedback_period > 0:
                     motor.sample_feedback(self.data, self.time_ms)
+            if robot.battery is not None:
+                robot.battery.step(self.data, robot.motors, self.step_ms / 1000.0, robot.entry.name)
+                robot.battery.sample(self.time_ms)
             if self.time_ms + 1e-9 >= robot.keyboard_due:
                 robot.keys = list(self.keys_down)
                 robot.keyboard_due += robot.keyboard_period
