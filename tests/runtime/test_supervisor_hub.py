@@ -401,3 +401,17 @@ def test_reset_physics_stops_a_motor_slowing_down_under_its_acceleration(tmp_pat
     sim.step()
     assert abs(float(sim.data.qvel[joint.dofadr[0]])) < 0.05
     sim.close()
+
+
+def test_fields_by_index_follow_webots_node_definitions(tmp_path):
+    # Solid.wrl: translation, rotation, children, name ... recognitionColors, translationStep, rotationStep and
+    # the hidden velocities; the deprecated `scale` of old Solids is no field of an R2023b Solid.
+    sim, hub, arm, shoulder = _arm_supervisor(tmp_path)
+    end = hub.tree.by_id[shoulder["id"]].get("endPoint")
+    names = [name for name, _ in hub.tree.field_names(end, 0)]
+    assert names[:4] == ["translation", "rotation", "children", "name"]
+    assert "scale" not in names
+    assert names[names.index("recognitionColors"):] == ["recognitionColors", "translationStep", "rotationStep",
+                                                        "linearVelocity", "angularVelocity"]
+    assert len(names) == 17
+    sim.close()

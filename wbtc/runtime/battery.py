@@ -42,6 +42,14 @@ class Battery:
             for tag in self.factors:
                 motors[tag].metered = True  # their mean effort over each step is kept (Motor.step_force)
 
+    def carry_to(self, new: Battery, motors: dict[int, Any]) -> None:
+        """Give a recompiled robot's battery this one's state (its motors are new objects)."""
+        new.energy, new.powered = self.energy, self.powered
+        new.period, new.due, new.value = self.period, self.due, self.value
+        if not self.powered:
+            for motor in motors.values():
+                motor.available = 0.0
+
     def enable(self, period: int, now_ms: float) -> None:
         """`batterySensorEnable(p)`; 0 disables."""
         self.period = int(period)

@@ -155,6 +155,13 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if robot.battery is not None and robot.battery.value is not None:
         message["battery"] = robot.battery.value
         robot.battery.value = None
+    dead = getattr(sim.tree, "dead_fields", None)
+    if dead and robot.dead_seen < len(dead):  # field refs a PROTO regeneration invalidated, once per robot
+        message["dead_fields"] = dead[robot.dead_seen:]
+        robot.dead_seen = len(dead)
+    if robot.supervisor_pushed is not None:
+        message["supervisor"] = robot.supervisor_pushed
+        robot.supervisor_pushed = None
     if robot.custom_data_pushed:
         message["custom_data"] = robot.custom_data
         robot.custom_data_pushed = False

@@ -102,6 +102,7 @@ def _keep_tags(before: list, after: list) -> None:
 def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:
     """Give a robot's new device objects the state of the old ones (same tags: same devices)."""
     new.custom_data, new.custom_data_pushed = old.custom_data, old.custom_data_pushed
+    new.supervisor_pushed, new.dead_seen = old.supervisor_pushed, old.dead_seen
     new.announced = old.announced
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
     if keep_motion:
@@ -116,6 +117,8 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
         for tag, motor in new.motors.items():
             if isinstance(old.motors.get(tag), Motor):
                 _copy(old.motors[tag], motor, _MOTOR_STATE)
+        if old.battery is not None and new.battery is not None:  # the energy left, the sensor, the power
+            old.battery.carry_to(new.battery, new.motors)
         for tag, led in new.leds.items():
             if isinstance(old.leds.get(tag), Led) and old.leds[tag].value:
                 led.set(old.leds[tag].value, sim.model)

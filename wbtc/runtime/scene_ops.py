@@ -137,9 +137,17 @@ def _replace(tree: SceneTree, old: Node, new: Node) -> None:
                 holder[i] = new
     tree.ids[id(new)] = node_id
     tree.by_id[node_id] = new
+    # Webots regenerates the instance: references to its internal fields (and to fields of the nodes
+    # inside it) become invalid; its interface fields stay valid and now belong to the new root.
+    inside = {id(old)} | {id(n) for _, n in tree._edges(old, [*tree.visible_children(old), *old.child_nodes()], True)}
     for ref in tree.fields:
-        if ref.node is old:
+        if id(ref.node) not in inside:
+            continue
+        if ref.node is old and ref.proto:
             ref.node = new
+        elif ref.id not in tree.dead_fields:
+            tree.dead_fields.append(ref.id)
+            tree.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
     tree.refresh()
 
 

@@ -58,6 +58,7 @@ class SceneTree:
         self.parents: dict[int, int] = {}
         self.fields: list[FieldRef] = []
         self.field_keys: dict[tuple[int, str, int], int] = {}
+        self.dead_fields: list[int] = []  # field ids a PROTO regeneration made invalid, in order
         self.refresh()
 
     # -- ids ----------------------------------------------------------------------------------------
@@ -163,7 +164,7 @@ class SceneTree:
             return [(f.name, f.type) for f in model.fields.values()]
         if node.schema is None:
             return []
-        return [(f.name, f.type) for f in node.schema.fields.values()]
+        return _webots_order([(f.name, f.type) for f in node.schema.fields.values() if f.kind != "deprecatedField"])
 
     def field(self, node: Node, name: str, proto: int) -> FieldRef | None:
         """A field ref, allocated once per (node, name, kind)."""
@@ -287,3 +288,21 @@ def _fields_of(node: Node) -> dict[str, Any]:
 
 def _lists_of(node: Node) -> list[list]:
     return [value for value in _fields_of(node).values() if isinstance(value, list)]
+
+
+#: Where Webots' node definitions put a Pose's (or Transform's) fields: the frame and the children first,
+#: the GUI steps and the hidden velocities last (Solid.wrl: translation, rotation, children, name, ...).
+_FIRST = ("translation", "rotation", "scale", "children")
+_LAST = ("translationStep", "rotationStep", "linearVelocity", "angularVelocity")
+
+
+def _webots_order(fields: list[tuple[str, str]]) -> list[tuple[str, str]]:
+    """A node's fields in Webots' order (wbtc's schema lists inherited fields first: Group's children)."""
+    names = [name for name, _ in fields]
+    if "translation" not in names or "children" not in names:
+        return fields
+    rank = {name: i for i, name in enumerate(_FIRST)}
+    last = {name: i for i, name in enumerate(_LAST)}
+    return sorted(fields, key=lambda item: (0, rank[item[0]]) if item[0] in rank
+                  else (2, last[item[0]]) if item[0] in last else (1, names.index(item[0])))
+

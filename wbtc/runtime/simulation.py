@@ -60,6 +60,8 @@ class RobotState:
     custom_data_pushed: bool = False  # a supervisor wrote customData: the next reply tells the controller
     announced: int | None = None  # how many devices the controller knows (None: no controller has started)
     battery: Battery | None = None
+    supervisor_pushed: bool | None = None  # a supervisor wrote the robot's `supervisor` field: tell the controller
+    dead_seen: int = 0  # how many of the scene tree's invalidated field ids this robot's controller knows
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
 

@@ -352,6 +352,11 @@ class SupervisorHub:
             scene_ops.set_value(tree, ref, index, value)
             if ref.name == "customData" and ref.node.is_a("Robot"):
                 self._push_custom_data(ref.node, str(value))
+            if ref.name == "supervisor" and ref.node.is_a("Robot"):
+                # Webots: the robot's controller gains or loses its supervisor rights from its next step.
+                for robot in self.sim.robots:
+                    if robot.entry.node is ref.node:
+                        robot.supervisor_pushed = bool(value)
             if ref.name == "coordinateSystem" and ref.node.is_a("WorldInfo"):
                 # Webots reads its compasses and WGS84 GPS in the new axes; the world itself does not turn.
                 self.sim.set_coordinate_system(str(value))

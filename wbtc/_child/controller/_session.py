@@ -175,6 +175,12 @@ class Session:
             self.keys = [int(k) for k in keys[:MAX_KEYS]]
         if reply.get("battery") is not None:
             self.battery_value = float(reply["battery"])
+        if reply.get("supervisor") is not None:  # a supervisor wrote this robot's `supervisor` field
+            self.supervisor = bool(reply["supervisor"])
+        for field_id in reply.get("dead_fields") or []:  # invalid after a PROTO regeneration: type 0
+            field = self.fields.pop(int(field_id), None)
+            if field is not None:
+                field.type = 0
         if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
             self.custom_data = str(reply["custom_data"])
         self._new_devices(reply)
