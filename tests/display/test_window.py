@@ -29,7 +29,7 @@ class Run:
         self.process = subprocess.Popen([sys.executable, "-m", "wbtc.cli", "run", str(WORLD), "--duration",
                                          str(duration)], env=xvfb.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                         text=True)
-        self.window = xvfb.window(TITLE)
+        self.window = xvfb.window(TITLE, process=self.process)
         xvfb.tool("xdotool", "mousemove", "640", "512")  # no window manager: keys go where the pointer is
 
     def time(self) -> float:

@@ -39,13 +39,22 @@ class Xvfb:
         done = subprocess.run(list(args), env=self.env, capture_output=True, timeout=30)
         return done.stdout.decode("utf-8", "replace").strip()
 
-    def window(self, title: str, timeout: float = 30.0) -> str:
-        """The id of the first window whose title contains `title` (waiting for it to appear)."""
+    def window(self, title: str, timeout: float = 90.0, process: subprocess.Popen | None = None) -> str:
+        """The id of the first window whose title contains `title` (waiting for it to appear).
+
+        The wait is long: with the rest of the suite running beside it (the conformance workers), a
+        software-rendered window can take tens of seconds to open. A `process` that ends before its
+        window appears fails at once, with what it printed.
+        """
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
             found = self.tool("xdotool", "search", "--name", title).split()
             if found:
                 return found[0]
+            if process is not None and process.poll() is not None:
+                out, err = process.communicate()
+                raise RuntimeError(f"the process ended (exit {process.returncode}) before its window appeared:\n"
+                                   f"{out}\n{err}")
             time.sleep(0.1)
         raise TimeoutError(f"no window titled {title!r} appeared")
 
