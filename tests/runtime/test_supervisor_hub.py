@@ -415,3 +415,26 @@ def test_fields_by_index_follow_webots_node_definitions(tmp_path):
                                                         "linearVelocity", "angularVelocity"]
     assert len(names) == 17
     sim.close()
+
+
+def test_actual_field_follows_is_links_out_to_the_world(tmp_path):
+    from wbtc.runtime.scene_tree import actual_field
+
+    (tmp_path / "Inner.proto").write_text('#VRML_SIM R2025a utf8\nPROTO Inner [\n  field SFFloat a 0.5\n'
+                                          '  field SFFloat loose 0.5\n]\n{\n  Solid { translationStep IS a }\n}\n')
+    (tmp_path / "Outer.proto").write_text('#VRML_SIM R2025a utf8\nEXTERNPROTO "Inner.proto"\nPROTO Outer [\n'
+                                          '  field SFFloat b 0.25\n]\n{\n  Inner { a IS b }\n}\n')
+    world = tmp_path / "links.wbt"
+    world.write_text('#VRML_SIM R2025a utf8\nEXTERNPROTO "Outer.proto"\nDEF O Outer { }\n'
+                     'Robot { supervisor TRUE controller "<none>" }\n')
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub = SupervisorHub(sim, scene, world)
+    tree = hub.tree
+    node = next(n for n in tree.by_id.values() if getattr(n, "def_name", None) == "O")
+    b = tree.field(node, "b", 1)
+    assert actual_field(tree, b) is b  # a field written in the world is its own actual field
+    assert actual_field(tree, tree.field(node, "a", 2)) is b  # Inner's a IS Outer's b
+    assert actual_field(tree, tree.field(node, "translationStep", 0)) is b  # the Solid's, through a and b
+    assert actual_field(tree, tree.field(node, "loose", 2)) is None  # linked to nothing
+    sim.close()

@@ -59,6 +59,10 @@ class ProtoInstance:
     span: Span
     def_name: str | None = None
     inner: ProtoInstance | None = None
+    #: This instance's fields written `IS param` in the PROTO body holding it (field -> param of `owner`).
+    links: dict[str, str] | None = None
+    #: The instance (one level of a PROTO chain) whose body holds this one; None in the world itself.
+    owner: ProtoInstance | None = None
 
 
 @dataclass(slots=True)
@@ -88,6 +92,7 @@ class Expander:
         self._resolvers: dict[Path, Resolver] = {}
         self._depth = 0
         self._next_id = 1
+        self._instances: dict[int, ProtoInstance] = {}  # id of an instance node -> what it expanded to
 
     # --- traversal -----------------------------------------------------------------------------
 
@@ -183,10 +188,19 @@ class Expander:
         if expanded is not None and node.hidden:
             apply_hidden(expanded, node.hidden, set(model.fields))
         if expanded is not None:
-            info = ProtoInstance(node.type_name, source, values, node.span, node.def_name, expanded.proto)
+            info = ProtoInstance(node.type_name, source, values, node.span, node.def_name, expanded.proto,
+                                 links=node.links)
+            self._instances[id(node)] = info
             expanded.proto = info
             if node.def_name is not None:
                 expanded.def_name = node.def_name
+            # What this body's nodes and instances link to by IS is a parameter of this instance.
+            for made in created:
+                inner = self._instances.get(id(made))
+                if inner is not None and inner.owner is None:
+                    inner.owner = info
+                elif made.links and made.link_owner is None:
+                    made.link_owner = info
         return expanded
 
     def _expand_value(self, value: Any, resolver: Resolver, top_level: bool) -> Any:
@@ -278,6 +292,8 @@ class Expander:
         for name, value in list(made.fields.items()):
             if not isinstance(value, s.IsRef):
                 continue
+            if value.name in model.fields:  # remembered for Field.getActualField and live reads
+                made.links = {**(made.links or {}), name: value.name}
             interface = model.fields.get(value.name)
             if interface is None:
                 close = suggest(value.name, model.fields)

@@ -306,3 +306,24 @@ def _webots_order(fields: list[tuple[str, str]]) -> list[tuple[str, str]]:
     return sorted(fields, key=lambda item: (0, rank[item[0]]) if item[0] in rank
                   else (2, last[item[0]]) if item[0] in last else (1, names.index(item[0])))
 
+
+
+def actual_field(tree: SceneTree, ref: FieldRef) -> FieldRef | None:
+    """`Field.getActualField`: the scene-tree field a field is linked to by IS, itself for one; None if unlinked.
+
+    A PROTO's parameter (a level of an instance's chain) or a field of a node its body made follows
+    the body's `IS` links outwards, level by level, to a parameter of an instance written in the world;
+    a link missing on the way (an unconnected field) ends it with None.
+    """
+    if ref.proto:
+        instance, name = instance_at(ref.node, ref.proto), ref.name
+    elif ref.node.link_owner is None:
+        return ref  # a field of a node written in the world
+    else:
+        instance, name = ref.node.link_owner, (ref.node.links or {}).get(ref.name)
+    while instance is not None and name is not None:
+        if instance.owner is None:  # an instance written in the world: its own parameter
+            node = next((n for n in tree.by_id.values() if isinstance(n, Node) and n.proto is instance), None)
+            return tree.field(node, name, 1) if node is not None else None
+        instance, name = instance.owner, (instance.links or {}).get(name)
+    return None

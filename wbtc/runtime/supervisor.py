@@ -42,7 +42,7 @@ from wbtc.errors import WbtcError
 from wbtc.runtime import poses, scene_ops, states, visibility, world_file
 from wbtc.runtime.rebuild import shift_device_times, swap_model
 from wbtc.runtime.recordings import RecordingError, Recordings
-from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, items_of, proto_names, to_typed
+from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, actual_field, items_of, proto_names, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
 from wbtc.scene.model import Node, Scene
 
@@ -106,6 +106,9 @@ class SupervisorHub:
             return self._proto_query(op[6:], self._node(args[0]), int(args[1]), args[2:])
         if op == "field.get":
             return self._field_get(self._field(args[0]), int(args[1]))
+        if op == "field.getActualField":
+            actual = actual_field(self.tree, self._field(args[0]))
+            return self.tree.field_ref(actual) if actual is not None else None
         if op == "field.getCount":
             ref = self._field(args[0])
             return len(items_of(self.tree.raw(ref))) if ref.type.startswith("MF") else -1
@@ -200,10 +203,27 @@ class SupervisorHub:
             live = poses.local_pose(self.sim, ref.node)
             if live is not None:
                 return live[0] if ref.name == "translation" else live[1]
+        elif ref.proto == 1 and ref.type in ("SFVec3f", "SFRotation"):
+            linked = self._linked_pose(ref)
+            if linked is not None:
+                return linked
         try:
             return self.tree.plain(ref, index)
         except IndexError:
             raise SupervisorError(f"Error: index {index} out of range for field '{ref.name}'.") from None
+
+    def _linked_pose(self, ref: FieldRef) -> Any:
+        """A PROTO parameter written `IS` into an inner Solid's translation or rotation reads where it is now."""
+        tree = self.tree
+        for node in list(tree.by_id.values()):
+            links = node.links if isinstance(node, Node) else None
+            for name in (n for n, param in (links or {}).items() if n in _POSE_FIELDS and param):
+                inner = tree.field(node, name, 0)
+                if inner is not None and inner.type == ref.type and actual_field(tree, inner) is ref:
+                    live = poses.local_pose(self.sim, node)
+                    if live is not None:
+                        return live[0] if name == "translation" else live[1]
+        return None
 
     def _node(self, node_id: Any) -> Node:
         node = self.tree.by_id.get(int(node_id))

@@ -30,10 +30,12 @@ class Node:
         hidden: `hidden name value` lines of a PROTO instance (saved state, kept as written).
         field_spans: where each written field's name is.
         origin: for nodes made by a PROTO, the span of the instance that made them.
+        links: for nodes made by a PROTO body, their fields written `IS param` (field name -> param name).
+        link_owner: the PROTO instance (`proto.expand.ProtoInstance`) whose params `links` name.
     """
 
     __slots__ = ("type_name", "fields", "span", "def_name", "schema", "hidden", "field_spans", "origin",
-                 "proto")
+                 "proto", "links", "link_owner")
 
     def __init__(self, type_name: str, span: Span, schema: NodeSchema | None, def_name: str | None = None) -> None:
         self.type_name = type_name
@@ -45,6 +47,8 @@ class Node:
         self.hidden: dict[str, s.Value] = {}
         self.origin: Span | None = None
         self.proto: Any = None
+        self.links: dict[str, str] | None = None
+        self.link_owner: Any = None
 
     @property
     def is_proto(self) -> bool:

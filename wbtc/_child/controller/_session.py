@@ -82,6 +82,7 @@ class Session:
         # Supervisor API state (supervisor.py, node.py, field.py)
         self.nodes: dict[int, Any] = {}  # node id -> the one Node object for it
         self.fields: dict[int, Any] = {}  # field id -> the one Field object for it
+        self.view_fields: dict[int, Any] = {}  # field id -> its read-only view (Proto.getField, base node fields)
         self.pending_fields: dict[tuple[int, int], Any] = {}  # (field id, index) -> value set since the last step
         self.pending_mode: int | None = None  # simulationSetMode() not yet sent
         self.movie_status = 0  # WB_SUPERVISOR_MOVIE_READY, RECORDING after movieStartRecording()
@@ -178,9 +179,10 @@ class Session:
         if reply.get("supervisor") is not None:  # a supervisor wrote this robot's `supervisor` field
             self.supervisor = bool(reply["supervisor"])
         for field_id in reply.get("dead_fields") or []:  # invalid after a PROTO regeneration: type 0
-            field = self.fields.pop(int(field_id), None)
-            if field is not None:
-                field.type = 0
+            for table in (self.fields, self.view_fields):
+                field = table.pop(int(field_id), None)
+                if field is not None:
+                    field.type = 0
         if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
             self.custom_data = str(reply["custom_data"])
         self._new_devices(reply)

@@ -102,12 +102,14 @@ class Field(MFItems):
         if not ref:
             return None
         session = _session.require()
-        field = session.fields.get(int(ref["id"]))
+        # A read-only view (a PROTO level's field, a base node's field) is another object than the field
+        # itself, as in Webots: writing through it is refused, getActualField leads to the writable one.
+        table = session.view_fields if read_only else session.fields
+        field = table.get(int(ref["id"]))
         if field is None:
             field = cls(ref, read_only)
-            session.fields[field._id] = field
+            table[field._id] = field
         else:
-            field._read_only = field._read_only or read_only
             if "count" in ref:
                 field._count = int(ref["count"])
                 field._count_epoch = session.epoch
@@ -130,9 +132,14 @@ class Field(MFItems):
         """The number of items of an MF field; -1 for an SF field."""
         return self.count
 
-    def getActualField(self) -> Field:
-        """The field a PROTO parameter is linked to; wbtc hands out the field itself."""
-        return self
+    def getActualField(self) -> Field | None:
+        """The scene-tree field this one is linked to by IS (itself for a scene-tree field); None if unlinked."""
+        function = "wb_supervisor_field_get_actual_field"
+        session = _session.require()
+        if not session.check_supervisor(function):
+            return None
+        ref = session.call(ROBOT_TAG, "field.getActualField", self._id, function=function)
+        return Field._from_ref(ref)
 
     def enableSFTracking(self, samplingPeriod: int) -> None:
         """Webots streams the field's value every period; wbtc always asks afresh, so only the check remains."""

@@ -50,7 +50,7 @@ class Proto:
             _session.error(f"Error: {function}() called with a NULL or empty 'name' argument.")
             return None
         ref = self._call("proto.getParameter", str(name), function=function)
-        return Field._from_ref(ref, read_only=self._level > 1)
+        return Field._from_ref(ref, read_only=True)  # Webots: a PROTO's fields are read-only views
 
     def getFieldByIndex(self, index: int) -> Field | None:
         """The field at ``index`` in the PROTO's interface order, or None."""
@@ -61,7 +61,7 @@ class Proto:
             _session.error(f"Error: {function}() called with a negative 'index' argument: {index}.")
             return None
         ref = self._call("proto.getParameterByIndex", int(index), function=function)
-        return Field._from_ref(ref, read_only=self._level > 1)
+        return Field._from_ref(ref, read_only=True)  # Webots: a PROTO's fields are read-only views
 
     def getNumberOfFields(self) -> int:
         """How many fields (parameters) the PROTO declares."""
