@@ -59,12 +59,14 @@ class SceneTree:
         self.fields: list[FieldRef] = []
         self.field_keys: dict[tuple[int, str, int], int] = {}
         self.dead_fields: list[int] = []  # field ids a PROTO regeneration made invalid, in order
+        self._pose_links: dict[int, tuple[Node, str]] | None = None  # see `linked_pose`
         self.refresh()
 
     # -- ids ----------------------------------------------------------------------------------------
     def refresh(self) -> None:
         """Give ids to nodes not seen yet (after an import) and recompute every parent."""
         self.parents = {}
+        self._pose_links = None
         for parent, node in self._edges(self.root, self.scene.nodes, hidden=True):
             if id(node) not in self.ids:
                 new = max(self.by_id) + 1
@@ -152,6 +154,21 @@ class SceneTree:
         return None
 
     # -- fields ------------------------------------------------------------------------------------
+    def linked_pose(self, ref: FieldRef) -> tuple[Node, str] | None:
+        """The inner Solid and pose field (translation, rotation) a PROTO parameter is written into by `IS`.
+
+        Found once per tree state: every node's pose field linked outwards, by the parameter it reaches.
+        """
+        if self._pose_links is None:
+            self._pose_links = {}
+            for node in list(self.by_id.values()):
+                for name, param in ((node.links or {}).items() if isinstance(node, Node) else ()):
+                    inner = self.field(node, name, 0) if name in ("translation", "rotation") and param else None
+                    actual = actual_field(self, inner) if inner is not None else None
+                    if actual is not None and actual is not inner and actual.type == inner.type:
+                        self._pose_links.setdefault(actual.id, (node, name))
+        return self._pose_links.get(ref.id)
+
     def field_names(self, node: Node, proto: int) -> list[tuple[str, str]]:
         """(name, type) of a node's fields in declaration order; a PROTO level's interface when `proto`."""
         if node is self.root:
@@ -164,7 +181,11 @@ class SceneTree:
             return [(f.name, f.type) for f in model.fields.values()]
         if node.schema is None:
             return []
-        return _webots_order([(f.name, f.type) for f in node.schema.fields.values() if f.kind != "deprecatedField"])
+        names = _SCHEMA_FIELDS.get(node.schema.name)
+        if names is None:  # once per node type: field lookups go through here on every supervisor call
+            names = _SCHEMA_FIELDS[node.schema.name] = _webots_order(
+                [(f.name, f.type) for f in node.schema.fields.values() if f.kind != "deprecatedField"])
+        return names
 
     def field(self, node: Node, name: str, proto: int) -> FieldRef | None:
         """A field ref, allocated once per (node, name, kind)."""
@@ -290,6 +311,8 @@ def _lists_of(node: Node) -> list[list]:
     return [value for value in _fields_of(node).values() if isinstance(value, list)]
 
 
+#: Each built-in node type's fields as a supervisor sees them (`SceneTree.field_names`).
+_SCHEMA_FIELDS: dict[str, list[tuple[str, str]]] = {}
 #: Where Webots' node definitions put a Pose's (or Transform's) fields: the frame and the children first,
 #: the GUI steps and the hidden velocities last (Solid.wrl: translation, rotation, children, name, ...).
 _FIRST = ("translation", "rotation", "scale", "children")

@@ -214,16 +214,12 @@ class SupervisorHub:
 
     def _linked_pose(self, ref: FieldRef) -> Any:
         """A PROTO parameter written `IS` into an inner Solid's translation or rotation reads where it is now."""
-        tree = self.tree
-        for node in list(tree.by_id.values()):
-            links = node.links if isinstance(node, Node) else None
-            for name in (n for n, param in (links or {}).items() if n in _POSE_FIELDS and param):
-                inner = tree.field(node, name, 0)
-                if inner is not None and inner.type == ref.type and actual_field(tree, inner) is ref:
-                    live = poses.local_pose(self.sim, node)
-                    if live is not None:
-                        return live[0] if name == "translation" else live[1]
-        return None
+        linked = self.tree.linked_pose(ref)
+        if linked is None:
+            return None
+        node, name = linked
+        live = poses.local_pose(self.sim, node)
+        return None if live is None else live[0] if name == "translation" else live[1]
 
     def _node(self, node_id: Any) -> Node:
         node = self.tree.by_id.get(int(node_id))
