@@ -79,7 +79,7 @@ Background {
   skyColor [0 0 0]
 }
 DirectionalLight {
-  direction 0 0 -1
+  direction 1 0 0
   intensity 1
   ambientIntensity 1
 }

@@ -129,7 +129,8 @@ def test_dimming_the_light_darkens_the_camera_images(supervised, no_keys):
 
     # Same run up to the first key at 1 s: same images.
     assert brightness(supervised, 0.528) == pytest.approx(brightness(no_keys, 0.528))
-    # At 3.6 s the lamp is at half its intensity: the image is darker (the sky, a good part of each
-    # image, does not depend on the lamp, so by less than half).
+    # At 3.6 s the lamp is at half its intensity: the image is darker, by little. The arena's PBR
+    # surfaces take most of their light from the TexturedBackground, as in Webots, whose PBR shading
+    # gives a 1 m-away point light 1/π of what a Phong Material gets; the sky does not change at all.
     dimmed, full = brightness(supervised, 3.6), brightness(no_keys, 3.6)
-    assert dimmed < 0.97 * full, f"mean grey {dimmed:.2f} with the lamp at 0.5, {full:.2f} at 1"
+    assert dimmed < full - 0.5, f"mean grey {dimmed:.2f} with the lamp at 0.5, {full:.2f} at 1"

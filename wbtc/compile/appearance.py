@@ -23,6 +23,7 @@ carry the whole transform: `geometry._mesh`); ImageTexture `filtering`.
 from __future__ import annotations
 
 import hashlib
+import math
 
 import mujoco
 import numpy as np
@@ -122,6 +123,22 @@ def _pbr_specular(appearance: Node) -> tuple[float, float]:
     return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
+def _camera_terms(node: Node) -> tuple[float, float]:
+    """(k, a): how Webots' shaders scale a material's linear colour for direct light (k) and ambient (a).
+
+    A Phong Material (and an Appearance without one) reflects direct light at its colour: k = 1. Webots'
+    PBR shader reflects it at (1 − 0.04)·(1 − metalness)/π of its base colour (Lambert's 1/π, no π in its
+    light intensities), and the Background's uniform light at (1 − 0.04)·(1 − metalness) plus, for
+    metals, about their base colour again (the sky's specular reflection): a. k is floored so that a
+    full metal keeps a colour for its ambient to scale (MuJoCo's emission multiplies the colour).
+    """
+    if node.base_type != "PBRAppearance":
+        return 1.0, 1.0
+    metalness = float(np.clip(float(node.get("metalness")), 0.0, 1.0))
+    diffuse = 0.96 * (1.0 - metalness)
+    return max(diffuse / math.pi, 0.01), diffuse + metalness
+
+
 def _ambient_role(node: Node) -> float | None:
     """A Phong Material's ambientIntensity; None for what the Background lights (PBR, no Material)."""
     material = node.get("material") if node.base_type == "Appearance" else None
@@ -171,6 +188,7 @@ def _material(ctx: CompileContext, rgba: np.ndarray, emission: float, specular: 
     material.texrepeat = list(repeat)
     material.info = info(node)
     ctx.ambient_roles[name] = ambient
+    ctx.camera_terms[name] = _camera_terms(node)
     if infrared != 1.0:
         ctx.table.infrared[name] = infrared
     if texture is not None:

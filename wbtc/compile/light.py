@@ -48,9 +48,12 @@ def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContex
     # sun is 2.7, meant for Webots' exposure curve) would saturate everything, so it is capped at 1.
     # Point and spot lights are not: their attenuation divides the intensity (worlds write 10 or 16
     # with 1/d² fall-off), and MuJoCo scales by a diffuse above 1 as Webots does.
+    # Cameras tone-map as Webots does (wbtc.runtime.tone) and draw with the full intensity.
     cap = 1.0 if kind == "DirectionalLight" else math.inf
     light.diffuse = np.clip(colour * intensity, 0.0, cap)
     light.specular = np.clip(colour * intensity * 0.3, 0.0, cap)
+    if intensity > cap:
+        ctx.table.light_boost[light.name] = intensity / cap
     light.ambient = np.clip(colour * float(node.get("ambientIntensity")) * MATERIAL_AMBIENT, 0.0, 1.0)
     light.castshadow = bool(node.get("castShadows"))
     if kind == "DirectionalLight":

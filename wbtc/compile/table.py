@@ -155,6 +155,12 @@ class DeviceTable:
         kinematic_velocities: the same for Solids without Physics: Webots moves them kinematically.
         connectors: Connectors outside robots (a docking plate on a plain Solid), as device entries.
         infrared: materials whose red infra-red sensors see scaled (PBR: 1 − 0.5·roughness), by material name.
+        camera_light: by material name, (emission, k): cameras draw its linear colour × k with this
+            emission, so that direct light and Webots' ambient and emissive terms come out as Webots'
+            shaders give them (see `wbtc.compile.appearance._camera_terms`).
+        light_boost: by light name, what its capped diffuse is multiplied by in cameras (the model
+            caps DirectionalLights at 1 for MuJoCo's untone-mapped viewer).
+        tracks: the robots' Tracks (`wbtc.compile.track.TrackEntry`): belts the runtime moves.
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -176,6 +182,11 @@ class DeviceTable:
     gps_wgs84: bool = False
     connectors: list[DeviceEntry] = field(default_factory=list)
     infrared: dict[str, float] = field(default_factory=dict)
+    camera_light: dict[str, tuple[float, float]] = field(default_factory=dict)
+    light_boost: dict[str, float] = field(default_factory=dict)
+    # (asymmetric ContactLaws, their geoms' materials by geom name): see wbtc.compile.contact.
+    asymmetric_friction: tuple[list[Any], dict[str, str]] | None = None
+    tracks: list[Any] = field(default_factory=list)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

@@ -8,12 +8,12 @@
   by their priority, else by maximum: geoms whose material has a ("default", M) ContactProperties
   get μ and a higher priority, so they win against default geoms; a ("default", "default") entry
   sets everyone's μ. A pair of two non-default materials is approximated by the first rule.
+  Rolling friction and asymmetric friction (several μ, `frictionRotation`): see wbtc.compile.contact.
 - Ambient light: Webots has no headlight. Its PBRAppearances are lit by the Background (image-based
   light; a plain sky colour without cube maps) and its Materials by the lights' ambientIntensity.
-  MuJoCo has one global ambient (the headlight's, here without diffuse or specular), set to the
-  larger of the two: the sky's mean level c (colour × luminosity; neutral, so greys stay grey)
-  through Webots' exposure tone curve and display gamma, (1 − e^−c)^(1/2.2), less what the lights'
-  own ambient already gives. So Materials get the sky's light too, which Webots does not give them.
+  MuJoCo has one global ambient (the headlight's, here without diffuse or specular); see
+  `set_ambient` for how each material gets its own: the sky's mean level c (colour × luminosity;
+  neutral, so greys stay grey) as radiance for PBR, the lights' ambient for Phong Materials.
   A world with neither lights nor a Background keeps MuJoCo's headlight so that it is not black.
 - NUE worlds (x north, y up, z east) are turned into ENU once, at the root: every top-level node
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
@@ -135,7 +135,7 @@ def set_ambient(background: Node | None, ctx: CompileContext) -> None:
     sky = background.get("skyColor") if background is not None else None
     if sky is not None and len(sky) > 0:
         level = max(float(background.get("luminosity")), 0.0) * float(np.mean(np.clip(sky[0], 0.0, None)))
-        image_light = (1.0 - math.exp(-level)) ** (1 / 2.2)
+        image_light = level  # radiance; cameras tone-map it as everything else (wbtc.runtime.tone)
     else:
         image_light = 0.0
     own = float(np.mean(np.sum([np.asarray(light.ambient, dtype=float) for light in lights], axis=0))) \
@@ -143,7 +143,22 @@ def set_ambient(background: Node | None, ctx: CompileContext) -> None:
     for name, role in ctx.ambient_roles.items():
         target = image_light if role is None else own / MATERIAL_AMBIENT * role
         material = ctx.spec.material(name)
-        material.emission = float(np.clip(material.emission + max(target - own, 0.0), 0.0, 1.0))
+        emissive = float(material.emission)
+        material.emission = float(np.clip(emissive + max(target - own, 0.0), 0.0, 1.0))
+        # Cameras work in Webots' linear radiance (wbtc.runtime.tone): wren turns a Material's colours
+        # from sRGB to linear, its ambient (ambientIntensity × diffuseColor) included, so the lights'
+        # ambient gives Σ ambientIntensity × lin(ambientIntensity) of the linear colour (lin(a·d) ≈
+        # lin(a)·lin(d)); the Background's light on PBR is already radiance; emission is linearised too.
+        # Cameras draw the colour × k and the emission ÷ k (see appearance._camera_terms).
+        k, scale = ctx.camera_terms.get(name, (1.0, 1.0))
+        lit = image_light if role is None else own / MATERIAL_AMBIENT * srgb_to_linear(role)
+        ctx.table.camera_light[name] = ((lit * scale + srgb_to_linear(emissive)) / k, k)
+
+
+def srgb_to_linear(value: float) -> float:
+    """One sRGB channel value (0-1) as linear light, the standard curve (wren's srgbToLinear)."""
+    value = min(max(float(value), 0.0), 1.0)
+    return value / 12.92 if value <= 0.04045 else ((value + 0.055) / 1.055) ** 2.4
 
 
 def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:

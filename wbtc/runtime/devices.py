@@ -16,7 +16,7 @@
   queue them until their next sample.
 
 Not honoured yet: Emitter `baudRate`, `byteSize`, `bufferSize`; Receiver noise
-fields; Camera `exposure`, `noiseMaskUrl`, segmentation images (see `recognition` for the rest);
+fields; Camera `noiseMaskUrl` (see `recognition` and `segmentation` for the rest);
 serial emitters (treated as radio).
 """
 
@@ -117,6 +117,10 @@ class Camera(Sensor):
         self.near = float(entry.fields.get("near", 0.01))
         self.fov = float(entry.fields.get("fieldOfView", 0.785398))
         self.noise = float(entry.fields.get("noise", 0.0))
+        self.exposure = float(entry.fields.get("exposure", 1.0))
+        # Before R2023a a `spherical TRUE` Camera was what `projection "cylindrical"` is now.
+        projection = str(entry.fields.get("projection", "planar"))
+        self.projection = "cylindrical" if entry.fields.get("spherical") and projection == "planar" else projection
         self.camera = sim.model.camera(entry.camera).id
         recognition = entry.node.get("recognition") if entry.node is not None else None
         self.recognition = Settings.of(plain_fields(recognition)) if isinstance(recognition, Node) else None
@@ -150,13 +154,17 @@ class Camera(Sensor):
         self._value = value
 
     def command(self, op: str, args: tuple) -> None:
-        """Recognition on/off and the field of view (the controller has checked the values)."""
+        """Recognition on/off, the field of view and the exposure (the controller has checked the values)."""
         if op == "recognitionEnable" and self.recognition is not None:
             self.recognition_period = max(int(args[0]), 0)
             now = self.sim.time_ms
             self.recognition_due = now + self.recognition_period if self.recognition_period > 0 else math.inf
         elif op == "recognitionDisable":
             self.recognition_period, self.recognition_due = 0, math.inf
+        elif op in ("enableSegmentation", "disableSegmentation"):
+            self.segmentation_enabled = op == "enableSegmentation"
+        elif op == "setExposure":
+            self.exposure = float(args[0])
         elif op == "setFov":
             self.fov = float(args[0])
             fovy = 2 * math.atan(math.tan(self.fov / 2) * self.height / max(self.width, 1))
@@ -191,7 +199,8 @@ class Camera(Sensor):
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
-        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near, spots=sim.laser_spots())
+        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near, spots=sim.laser_spots(),
+                                                         exposure=self.exposure)
         pixels = self._image()
         if self.noise > 0 and sim.noise_rng is not None:
             # Webots: σ = noise × 255 on every channel, independently per pixel and per sample.

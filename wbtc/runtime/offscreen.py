@@ -13,8 +13,16 @@ other decorations. A camera's `near` distance replaces MuJoCo's model-wide near 
 Geoms whose bounding sphere lies outside a model camera's view are left out before drawing (the
 software OpenGL of a headless machine pays per geom drawn, seen or not); the image is the same.
 
-Not honoured yet: Camera `far`, `exposure`, `antiAliasing TRUE` and Webots' tone mapping (MuJoCo's
-colours are linear and clamped); shadows (`castShadows`) in camera images and recordings.
+Colours go through Webots' tone mapping (see `tone`): MuJoCo draws the scene with every light and
+emission divided by `HEADROOM`, so linear radiance up to that level fits its 8-bit image, and each pixel
+is then mapped by the exposure curve and display gamma of Webots' HDR resolve. Image textures are
+linearised (sRGB to linear) in the renderer's own copy, as Webots' shaders do; the sky is not lit, and
+its texture is stored so that it comes out of the curve as its own colour (a Background colour reads
+as written, as in Webots' cameras).
+
+Not honoured yet: Camera `far`, `antiAliasing TRUE`; shadows (`castShadows`) in camera images and
+recordings. Dark radiance is coarse: the first 8-bit level above black is 28 after the curve (Webots'
+HDR buffer is float), so shades darker than about 0.03 read 0 or 28.
 """
 
 from __future__ import annotations
@@ -26,12 +34,14 @@ import os
 import mujoco
 import numpy as np
 
+from wbtc.runtime import tone
+
 #: Scene flags for every image: no reflections, haze or post-processing.
 _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
 
 
-#: The laser spot as Webots' cameras show it (an emissive red, 0xEF after their tone mapping).
-_SPOT_RGBA = np.array([239 / 255, 0.0, 0.0, 1.0], dtype=np.float32)
+#: The laser spot as Webots' cameras show it: an emissive red that reads 0xEF after their tone mapping.
+_SPOT_RGBA = np.array([tone.inverse(239) / 255, 0.0, 0.0, 1.0], dtype=np.float32)
 
 
 def _gl_context(width: int, height: int) -> object:
@@ -54,7 +64,8 @@ class Offscreen:
 
     def __init__(self, model: mujoco.MjModel, width: int, height: int, *, antialias: bool = False,
                  shadows: bool = False, textures: dict[int, int] | None = None,
-                 invisible: dict[int, set[int]] | None = None) -> None:
+                 invisible: dict[int, set[int]] | None = None, camera_light: np.ndarray | None = None,
+                 light_boost: np.ndarray | None = None) -> None:
         """Make the OpenGL and MuJoCo contexts.
 
         Args:
@@ -67,7 +78,12 @@ class Offscreen:
                 simulation, which bumps them); each is uploaded again before the next image.
             invisible: geoms each model camera does not draw (a supervisor's Node.setVisibility), shared
                 with the simulation.
+            camera_light: per material, (emission, colour factor) in Webots' linear terms
+                (`DeviceTable.camera_light`); None keeps the model's emissions and lights' ambients.
+            light_boost: per light, what its diffuse and specular are multiplied by (`DeviceTable.light_boost`).
         """
+        self.camera_light = camera_light
+        self.light_boost = light_boost
         self.invisible = invisible if invisible is not None else {}
         self.textures = textures if textures is not None else {}
         self.uploaded: dict[int, int] = {}
@@ -85,6 +101,8 @@ class Offscreen:
         finally:
             vis.global_.offwidth, vis.global_.offheight, vis.quality.offsamples, vis.quality.shadowsize = saved
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
+        for tex in range(model.ntex):
+            self._upload(tex)
         self.scene = mujoco.MjvScene(model, maxgeom=model.ngeom + 64)
         for flag in _OFF:
             self.scene.flags[flag] = 0
@@ -107,8 +125,32 @@ class Offscreen:
         """Upload the textures whose pixels changed since this renderer last drew (its GL context is current)."""
         for tex, version in self.textures.items():
             if self.uploaded.get(tex) != version:
-                mujoco.mjr_uploadTexture(self.model, self.context, tex)
+                self._upload(tex)
                 self.uploaded[tex] = version
+
+    def _upload(self, tex: int) -> None:
+        """Upload texture `tex` as this renderer draws it: linear, or for the sky the curve's inverse.
+
+        The model keeps its sRGB bytes (the viewer shows them as they are); only this context's copy
+        is converted, from the model's bytes, which are put back at once.
+        """
+        model = self.model
+        start = int(model.tex_adr[tex])
+        size = int(model.tex_width[tex] * model.tex_height[tex] * model.tex_nchannel[tex])
+        if size == 0:
+            return
+        block = model.tex_data[start:start + size]
+        saved = block.copy()
+        if model.tex_nchannel[tex] == 4:  # alpha stays as it is
+            colour = block.reshape(-1, 4)[:, :3]
+        else:
+            colour = block
+        is_sky = model.tex_type[tex] == mujoco.mjtTexture.mjTEXTURE_SKYBOX
+        colour[...] = tone.inverse(colour) if is_sky else tone.SRGB_TO_LINEAR[colour]
+        try:
+            mujoco.mjr_uploadTexture(model, self.context, tex)
+        finally:
+            block[...] = saved
 
     def depth(self, data: mujoco.MjData, camera: int, near: float, far: float) -> np.ndarray:
         """Render model camera `camera` and read its depth: metres to the image plane, rows from the bottom.
@@ -127,7 +169,7 @@ class Offscreen:
 
     def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
              pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None,
-             spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None) -> np.ndarray:
+             spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None, exposure: float = 1.0) -> np.ndarray:
         """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
 
         Args:
@@ -137,6 +179,7 @@ class Offscreen:
             far: far clipping distance in metres (None: MuJoCo's).
             pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
             spots: laser spots to draw (centre, surface normal, radius), as Webots' cameras see them.
+            exposure: the camera's exposure, for the tone curve.
 
         Returns:
             The RGB pixels, rows from the **bottom**; overwritten by the next `draw`.
@@ -164,17 +207,19 @@ class Offscreen:
             culled = unseen if culled is None else np.union1d(culled, unseen)
         groups = self.model.geom_group
         kept = groups[culled].copy() if culled is not None else None
+        lighting = self._dim()
         try:
             if culled is not None:
                 groups[culled] = self.hidden_group
             mujoco.mjv_updateScene(self.model, data, self.option, None, cam, mujoco.mjtCatBit.mjCAT_ALL, self.scene)
+            for centre, normal, radius in spots or []:
+                self._add_spot(centre, normal, radius)
         finally:
+            self._restore(lighting)
             if culled is not None:
                 groups[culled] = kept
             if saved is not None:
                 data.cam_xpos[camera], data.cam_xmat[camera] = saved
-        for centre, normal, radius in spots or []:
-            self._add_spot(centre, normal, radius)
         if near is not None and near > 0:
             for glcam in self.scene.camera:
                 scale = near / glcam.frustum_near
@@ -189,13 +234,48 @@ class Offscreen:
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         mujoco.mjr_render(self.rect, self.scene, self.context)
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
-        return self.pixels
+        return tone.apply(self.pixels, exposure)
+
+    def _dim(self) -> tuple[np.ndarray, ...]:
+        """Divide the model's lights and emissions by the tone headroom; returns what to put back.
+
+        `mjv_updateScene` copies them into the scene, so the model holds its own values again before
+        anything else (the viewer, the next step) reads it.
+        """
+        model, head = self.model, self.model.vis.headlight
+        saved = (model.light_ambient.copy(), model.light_diffuse.copy(), model.light_specular.copy(),
+                 model.mat_emission.copy(), head.ambient.copy(), head.diffuse.copy(), head.specular.copy(),
+                 model.mat_rgba.copy(), model.geom_rgba.copy())
+        # Colours are sRGB in the model (the viewer shows them as they are); Webots lights linear ones.
+        model.mat_rgba[:, :3] = tone.linear(model.mat_rgba[:, :3])
+        model.geom_rgba[:, :3] = tone.linear(model.geom_rgba[:, :3])
+        if self.camera_light is not None and len(self.camera_light) == model.nmat:
+            # Each material's own ambient and emission stand in for the lights' shared ambient, and
+            # its colour takes the share of direct light Webots' shader gives it.
+            model.mat_emission[:] = self.camera_light[:, 0]
+            model.mat_rgba[:, :3] *= self.camera_light[:, 1:2]
+            with_material = model.geom_matid >= 0  # their own rgba, when set, replaces the material's
+            model.geom_rgba[with_material, :3] *= self.camera_light[model.geom_matid[with_material], 1:2]
+            model.light_ambient[:] = 0.0
+        if self.light_boost is not None and len(self.light_boost) == model.nlight:
+            model.light_diffuse *= self.light_boost[:, None]
+            model.light_specular *= self.light_boost[:, None]
+        scale = 1.0 / tone.HEADROOM
+        for array in (model.light_ambient, model.light_diffuse, model.light_specular, model.mat_emission,
+                      head.ambient, head.diffuse, head.specular):
+            array *= scale
+        return saved
+
+    def _restore(self, saved: tuple[np.ndarray, ...]) -> None:
+        model, head = self.model, self.model.vis.headlight
+        (model.light_ambient[...], model.light_diffuse[...], model.light_specular[...], model.mat_emission[...],
+         head.ambient[...], head.diffuse[...], head.specular[...], model.mat_rgba[...], model.geom_rgba[...]) = saved
 
     def _add_spot(self, centre: np.ndarray, normal: np.ndarray, radius: float) -> None:
         """A laser's red disc in the scene, facing along `normal`.
 
         Webots draws it emissive red; its cameras show that, after their tone mapping, as (239, 0, 0):
-        wbtc has no tone mapping, so the disc glows in that colour.
+        the disc glows at the level the curve maps to that (the lights are dimmed already).
         """
         scene = self.scene
         if scene.ngeom >= scene.maxgeom:

@@ -346,8 +346,32 @@ class Simulation:
         if renderer is None:
             renderer = self._renderers[key] = Offscreen(self.model, width, height, antialias=antialias,
                                                         shadows=shadows, textures=self.texture_versions,
-                                                        invisible=self.invisible)
+                                                        invisible=self.invisible, camera_light=self.camera_light(),
+                                                        light_boost=self.light_boost())
         return renderer
+
+    def camera_light(self) -> np.ndarray | None:
+        """Each material's (emission, colour factor) in cameras (`DeviceTable.camera_light`), by id."""
+        lights = self.table.camera_light
+        if not lights:
+            return None
+        values = np.column_stack([self.model.mat_emission.astype(float), np.ones(self.model.nmat)])
+        for name, value in lights.items():
+            material = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_MATERIAL, name)
+            if material >= 0:
+                values[material] = value
+        return values
+
+    def light_boost(self) -> np.ndarray | None:
+        """Each light's diffuse factor in cameras (`DeviceTable.light_boost`), by id; None when all are 1."""
+        if not self.table.light_boost:
+            return None
+        values = np.ones(self.model.nlight)
+        for name, value in self.table.light_boost.items():
+            light = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_LIGHT, name)
+            if light >= 0:
+                values[light] = value
+        return values
 
     def render(self, camera: int, width: int, height: int) -> np.ndarray:
         """An RGB image (rows from the top) from a model camera (-1: MuJoCo's free camera)."""

@@ -1,0 +1,82 @@
+"""Webots' camera tone mapping as lookup tables over MuJoCo's 8-bit images.
+
+Webots renders into a floating-point (HDR) buffer and its last pass maps each channel's radiance r
+to the image: ``(1 − e^(−r × exposure))^(1/2.2)`` (exposure tone curve, then display gamma). A lit
+red surface of radiance 1 reads 207, not 255. MuJoCo's renderer writes linear colours clamped to 1
+into 8 bits, so wbtc draws with every light and emission divided by `HEADROOM` (radiance up to 2 fits)
+and maps each 8-bit level v, standing for radiance v / 255 × HEADROOM, through the curve.
+
+- The top level (a saturated pixel, radiance at or above `HEADROOM`) maps to 255: Webots' curve
+  only reaches 255 at infinite radiance, and a sky written as 1 reads 255 in Webots' cameras.
+- Image textures are linearised first (`SRGB_TO_LINEAR`), as Webots' shaders do (SRGBtoLINEAR on
+  every texture sample before lighting).
+- The sky is not lit: its texture holds `inverse(colour)`, the level the curve maps back to the colour.
+
+Not honoured: radiance between 0 and HEADROOM / 255 (the first level, 28 after the curve) has no
+finer steps, where Webots' float buffer has them.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+#: Radiance that fills MuJoCo's 8-bit range (the scene is drawn with its light divided by this).
+HEADROOM = 2.0
+
+#: Webots' display gamma in its HDR resolve pass.
+GAMMA = 2.2
+
+
+@functools.lru_cache(maxsize=16)
+def curve(exposure: float = 1.0) -> np.ndarray:
+    """The 256-entry table from a drawn level to Webots' image value at this camera exposure."""
+    radiance = np.arange(256, dtype=np.float64) / 255.0 * HEADROOM * max(float(exposure), 0.0)
+    table = np.rint(255.0 * (1.0 - np.exp(-radiance)) ** (1.0 / GAMMA)).astype(np.uint8)
+    table[255] = 255
+    table.flags.writeable = False  # shared by every caller (cached)
+    return table
+
+
+@functools.lru_cache(maxsize=1)
+def _inverse_table() -> np.ndarray:
+    # For each image value, the level whose mapped value (exposure 1) is nearest: the curve climbs
+    # by up to 28 a level near black and about 3 at mid-grey, so not every value has its own level.
+    table = curve(1.0).astype(int)
+    values = np.arange(256)
+    above = np.searchsorted(table, values, side="left").clip(0, 255)
+    below = (above - 1).clip(0, 255)
+    nearer = np.abs(table[below] - values) < np.abs(table[above] - values)
+    return np.where(nearer, below, above).astype(np.uint8)
+
+
+def inverse(value: int | np.ndarray) -> np.ndarray | int:
+    """The drawn level that the exposure-1 curve maps to `value` (0-255), per element."""
+    table = _inverse_table()
+    if isinstance(value, np.ndarray):
+        return table[value]
+    return int(table[int(value)])
+
+
+def _srgb_to_linear() -> np.ndarray:
+    """8-bit sRGB to 8-bit linear, the standard piecewise curve (as Webots' SRGBtoLINEAR)."""
+    c = np.arange(256, dtype=np.float64) / 255.0
+    linear = np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+    return np.rint(linear * 255.0).astype(np.uint8)
+
+
+#: Table from an image texture's sRGB byte to its linear byte.
+SRGB_TO_LINEAR = _srgb_to_linear()
+
+
+def linear(colour: np.ndarray) -> np.ndarray:
+    """Colour values in sRGB (0-1, float array) as linear light, the standard curve."""
+    c = np.clip(colour, 0.0, 1.0)
+    return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
+
+
+def apply(pixels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
+    """Map drawn 8-bit pixels through the curve in place; returns `pixels`."""
+    np.take(curve(exposure), pixels, out=pixels)
+    return pixels
