@@ -189,6 +189,9 @@ def main() -> None:
             code = 1
         sys.stdout.flush()
         sys.stderr.flush()
+        expand = sys.modules.get("wbtc.proto.expand")
+        if expand is not None:  # what atexit would have cleaned: templates' temporary files
+            expand.remove_temporary_files()
         os._exit(int(code or 0))
 
 

@@ -438,3 +438,36 @@ def test_actual_field_follows_is_links_out_to_the_world(tmp_path):
     assert actual_field(tree, tree.field(node, "translationStep", 0)) is b  # the Solid's, through a and b
     assert actual_field(tree, tree.field(node, "loose", 2)) is None  # linked to nothing
     sim.close()
+
+
+def test_simulation_reset_keeps_written_fields_and_removals_and_drops_imports(hub):
+    # Webots' Reset/Reload matrix, "Reset from Supervisor": Solids' poses come back, nodes added since
+    # the start go, but other fields keep what a supervisor wrote and removed nodes stay removed.
+    hub, referee = hub
+    sim = hub.sim
+    _, arm = _field(hub, referee, "ARM", "translation")  # a Pose: not reset
+    _, box = _field(hub, referee, "BOX", "translation")  # a Solid: reset
+    driver, args = _field(hub, referee, "DRIVER", "controllerArgs")
+    ball = hub.call(referee, "getFromDef", ("BALL", -1))
+    root = hub.call(referee, "getRoot", ())
+    children = hub.call(referee, "node.getField", (root["id"], "children", False))
+    count = children["count"]
+    hub.queue(referee, "field.set", (arm["id"], -1, [0.0, 0.0, 0.3]))
+    hub.queue(referee, "field.set", (box["id"], -1, [2.0, 2.0, 0.05]))
+    hub.queue(referee, "field.set", (args["id"], 0, "1.0"))
+    hub.queue(referee, "field.importMFNode", (children["id"], -1, 'DEF EXTRA Solid { translation 0 2 0.05 }'))
+    hub.queue(referee, "node.remove", (ball["id"],))
+    hub.flush()
+    for _ in range(10):
+        sim.step()
+    assert hub.call(referee, "field.getCount", (children["id"],)) == count  # one in, one out
+    hub.queue(referee, "simulationReset", ())
+    assert hub.flush().reset
+    assert sim.time_ms == 0.0
+    assert hub.call(referee, "field.get", (box["id"], -1)) == pytest.approx([1, 1, 0.05])
+    assert hub.call(referee, "field.get", (arm["id"], -1)) == pytest.approx([0, 0, 0.3])
+    assert hub.call(referee, "field.get", (args["id"], 0)) == "1.0"
+    assert hub.call(referee, "getFromDef", ("EXTRA", -1)) is None
+    assert hub.call(referee, "getFromDef", ("BALL", -1)) is None
+    assert hub.call(referee, "field.getCount", (children["id"],)) == count - 1
+    assert next(r for r in sim.robots if r.entry.name == "driver").entry.controller_args[0] == "1.0"

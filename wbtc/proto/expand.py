@@ -13,8 +13,12 @@ Not honoured yet: re-expansion when a field changes at run time (supervisor, iss
 
 from __future__ import annotations
 
+import atexit
 import json
+import os
 import re
+import shutil
+import tempfile
 from collections import Counter
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
@@ -336,6 +340,10 @@ class Expander:
         shared = {k: v for k, v in context.items() if k != "id"}
         key = (model.path, json.dumps({k: v for k, v in fields.items() if k in read}, sort_keys=True, default=str),
                json.dumps(shared, sort_keys=True, default=str), "context.id" in model.syntax.template and context["id"])
+        # A nonDeterministic PROTO (random numbers, files) is generated anew at each reset, as in Webots;
+        # within one generation the world's several loads (check, compile) share its text.
+        if "nonDeterministic" in model.tags:
+            key = (*key, "generation", _GENERATION[0])
         cached = _RENDERED.get(key)
         if cached is not None:
             return parse_body(cached, str(model.path), span.line, span.column)
@@ -359,12 +367,41 @@ class Expander:
             "world": str(world), "proto": str(model.path), "project_path": str(project),
             "coordinate_system": self.scene.coordinate_system,
             "webots_version": {"major": version.split()[0], "revision": "0"},
-            "webots_home": "", "temporary_files_path": "/tmp", "os": "linux", "id": self._next_id,
+            "webots_home": "", "os": "linux", "id": self._next_id,
+            # made only for a template that uses it (a folder per run)
+            "temporary_files_path": temporary_files_path() if "temporary_files_path" in (model.syntax.template or "")
+            else "",
         }
 
 
 _FAILED = object()
 _RENDERED: dict[tuple[Any, ...], str] = {}
+_TEMPORARY: list[str] = []
+_GENERATION = [0]
+
+
+def regenerate_non_deterministic() -> None:
+    """Make the next expansions generate nonDeterministic PROTOs anew (a simulation reset)."""
+    _GENERATION[0] += 1
+
+
+def temporary_files_path() -> str:
+    """The folder of this process for templates' files (`context.temporary_files_path`, ending in /).
+
+    Webots gives each of its runs a fresh temporary folder, so a file a template writes there (a count
+    of its regenerations) starts anew with the run; the folder goes when the process ends.
+    """
+    if not _TEMPORARY:
+        folder = tempfile.mkdtemp(prefix="wbtc-templates-")
+        atexit.register(remove_temporary_files)
+        _TEMPORARY.append(folder + os.sep)
+    return _TEMPORARY[0]
+
+
+def remove_temporary_files() -> None:
+    """Remove the templates' temporary folder (at exit; `wbtc run` calls it before its quick exit)."""
+    while _TEMPORARY:
+        shutil.rmtree(_TEMPORARY.pop(), ignore_errors=True)
 _FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
 
 

@@ -59,6 +59,28 @@ class ProtoModel:
         """True for a procedural PROTO (its body is JavaScript or Lua template text)."""
         return self.syntax.template is not None
 
+    @property
+    def tags(self) -> frozenset[str]:
+        """The header's `# tags:` words (e.g. `nonDeterministic`, `hidden`, `deprecated`)."""
+        return proto_tags(self.path)
+
+
+@lru_cache(maxsize=512)
+def proto_tags(path: Path) -> frozenset[str]:
+    """The `# tags: a, b` words of a PROTO file's leading comment lines (empty when it has none)."""
+    tags: set[str] = set()
+    try:
+        with open(path, encoding="utf-8", errors="replace") as handle:
+            for line in handle:
+                text = line.strip()
+                if text and not text.startswith("#"):
+                    break  # the header comments end where the PROTO (or EXTERNPROTO) lines start
+                if text.lower().startswith("# tags:"):
+                    tags.update(t.strip() for t in text[len("# tags:"):].split(",") if t.strip())
+    except OSError:
+        pass
+    return frozenset(tags)
+
 
 def _not_node(_value: object) -> bool:
     return False

@@ -101,7 +101,10 @@ def _keep_tags(before: list, after: list) -> None:
 
 def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion: bool) -> None:
     """Give a robot's new device objects the state of the old ones (same tags: same devices)."""
-    new.custom_data, new.custom_data_pushed = old.custom_data, old.custom_data_pushed
+    if new.custom_data == old.custom_data:
+        new.custom_data_pushed = old.custom_data_pushed
+    else:  # the field changed (a regenerated PROTO writes its own): the controller reads the new value
+        new.custom_data_pushed = True
     new.supervisor_pushed, new.dead_seen = old.supervisor_pushed, old.dead_seen
     new.announced = old.announced
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due

@@ -69,11 +69,17 @@ def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Nod
     """Parse, expand and insert the nodes written in VRML into an SFNode or MFNode field.
 
     An MFNode field gets every node of the text, in order, from `position` on (Webots imports
-    "Solid { } Solid { }" as two nodes); an SFNode field gets the first one. Returns the first node.
+    "Solid { } Solid { }" as two nodes); an SFNode field gets the first one. The text may USE the
+    world's DEF nodes. Returns the first node.
     """
     scene = tree.scene
     items = parse_body("{ " + text + " }", str(scene.path))
     builder = NodeBuilder(str(scene.path), scene.version)
+    # The text may USE the world's own DEF nodes (Webots: those before the insertion point; wbtc
+    # takes every DEF outside PROTO bodies, the last one of a name winning, as a world file's USE).
+    for _, node in tree._edges(tree.root, scene.nodes, hidden=False):
+        if node.def_name:
+            builder.defs[node.def_name] = node
     built = builder.build(items)
     if builder.errors:
         raise WbtcError(builder.errors[0].message)

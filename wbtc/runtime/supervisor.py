@@ -9,9 +9,11 @@ the simulation advances, in call order, as Webots applies supervisor "set" opera
   changed is expanded anew), then the running state is carried over (see `rebuild`);
 - `importMFNodeFromString`/`importSFNodeFromString` expand the new node into the scene, `remove`
   takes a node out; both recompile, and the runner starts or stops the robots' controllers;
-- `simulationReset` reloads the world file (time 0) and every controller goes on, as Webots' API
-  call does (its Reset button would restart them): each robot keeps its devices' settings (sampling
-  periods, channels) while its motors start over; `worldReload` restarts every controller;
+- `simulationReset` is Webots' reset, not a reload (see `reset`): time 0, poses, joint positions and
+  physics back, nodes added since the start removed, every other field as a supervisor left it, and
+  every controller goes on (Webots' Reset button would restart them): each robot keeps its devices'
+  settings (sampling periods, channels) while its motors start over; `worldReload` reloads the world
+  file and restarts every controller;
   `simulationQuit(status)` ends the run with that exit code.
 
 `simulationSetMode` is kept here and honoured by the runner; `animationStartRecording` writes a
@@ -42,6 +44,7 @@ from wbtc.errors import WbtcError
 from wbtc.runtime import poses, scene_ops, states, visibility, world_file
 from wbtc.runtime.rebuild import shift_device_times, swap_model
 from wbtc.runtime.recordings import RecordingError, Recordings
+from wbtc.runtime.reset import Initial
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, actual_field, items_of, proto_names, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation, descends
 from wbtc.scene.model import Node, Scene
@@ -62,6 +65,7 @@ class FlushResult:
     restart: list[RobotState] = field(default_factory=list)
     time_shift: float = 0.0  # ms by which a reset moved time back
     keep_controllers: bool = False  # a reset that leaves every controller running (simulationReset)
+    reload: bool = False  # the world file anew (worldReload, worldLoad), every controller restarted
 
 
 class SupervisorHub:
@@ -80,6 +84,7 @@ class SupervisorHub:
         self.recordings = Recordings()
         self.states = {"__init__": states.capture(sim, 0)}  # saveState/loadState, by name
         self.states_world = world  # the world those states belong to
+        self.initial = Initial.capture(self.tree)  # what simulationReset puts back
 
     # -- queries ------------------------------------------------------------------------------------
     def call(self, robot: RobotState, op: str, args: tuple) -> Any:
@@ -254,7 +259,10 @@ class SupervisorHub:
             outcome.time_shift = self.sim.time_ms
             # A controller that goes on keeps its devices as they were set (sampling periods, channels);
             # when every controller starts over (worldReload, worldLoad) they start from nothing.
-            self._reload(keep_controllers=outcome.keep_controllers and not outcome.restart)
+            if outcome.keep_controllers and not outcome.reload:  # a robot may still restart its own
+                self._reset()
+            else:
+                self._reload()
         elif dirty:
             self._recompile(dirty)
             outcome.rebuilt = True
@@ -278,11 +286,11 @@ class SupervisorHub:
             outcome.reset = True
             outcome.keep_controllers = True
         elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
-            outcome.reset = True
+            outcome.reset = outcome.reload = True
             outcome.restart += list(sim.robots)
         elif op == "worldLoad":  # another world: as worldReload, from that file (controllers found beside it)
             self._load_other(Path(str(args[0])))
-            outcome.reset = True
+            outcome.reset = outcome.reload = True
             outcome.restart += list(sim.robots)
         elif op == "worldSave":
             target = Path(str(args[0])) if args and args[0] else self.world
@@ -422,6 +430,23 @@ class SupervisorHub:
             raise SupervisorError(f"Error: wb_supervisor_world_load(): cannot load {path}: {exc}") from None
         self.world = path
 
+    def _reset(self) -> None:
+        """`simulationReset`: Webots' reset, not a reload (see `wbtc.runtime.reset`); controllers go on.
+
+        Each robot keeps its devices as its controller set them (sampling periods, channels) while its
+        motors start over; time, labels, visibility and random seeds start anew.
+        """
+        self.initial.apply(self.tree)
+        self.sim.hidden.clear()  # Webots resets the nodes' visibility
+        result = compile_scene(self.tree.scene, self.options)
+        shift = self.sim.time_ms
+        swap_model(self.sim, result, keep_time=False, by_name=True)
+        shift_device_times(self.sim, shift)
+        self.sim.time_ms = 0.0
+        self.sim.labels = {}
+        self.sim.reseed()
+        mujoco.mj_forward(self.sim.model, self.sim.data)
+
     def _reload(self, keep_controllers: bool = False) -> None:
         """The world as loaded, at time 0; field handles keep pointing at their nodes.
 
@@ -449,3 +474,4 @@ class SupervisorHub:
         mujoco.mj_forward(self.sim.model, self.sim.data)
         if self.states_world != self.world:  # another world (worldLoad): its own "__init__", no saved states
             self.states, self.states_world = {"__init__": states.capture(self.sim, 0)}, self.world
+        self.initial = Initial.capture(self.tree)
