@@ -15,12 +15,13 @@ from pydantic import BaseModel
 
 from wbtc.scene.model import Node, Scene
 
-#: Built-in node types that are devices (`Robot.getDevice` finds them by their `name` field).
+#: Built-in node types that are devices (`Robot.getDevice` finds them by their `name` field). A Track is
+#: not one (Webots' WbTrack is a Solid): the devices in its `device` field are.
 DEVICE_TYPES = frozenset({
     "Accelerometer", "Altimeter", "Brake", "Camera", "Compass", "Connector", "Display", "DistanceSensor",
     "Emitter", "GPS", "Gyro", "InertialUnit", "LED", "Lidar", "LightSensor", "LinearMotor", "Microphone",
     "Pen", "PositionSensor", "Radar", "RangeFinder", "Receiver", "RotationalMotor", "Skin", "Speaker",
-    "TouchSensor", "Track", "VacuumGripper", "DifferentialWheels",
+    "TouchSensor", "VacuumGripper", "DifferentialWheels",
 })
 #: Fields that never hold devices (collision shapes, physics, looks).
 _NO_DEVICE_FIELDS = frozenset({"boundingObject", "physics", "appearance", "geometry", "immersionProperties"})

@@ -14,7 +14,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wbtc.compile import damping, device, still_joints, world
+from wbtc.compile import bodyless, damping, device, still_joints, world
 from wbtc.compile.context import CompileContext, CompileOptions
 from wbtc.compile.solid import BodyBuilder
 from wbtc.compile.table import DeviceTable
@@ -85,6 +85,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     _planes_in_moving_bodies(spec)
     still_joints.hold_still_joints(spec)
+    bodyless.separate_bodyless(spec)
     model = _compile(spec)
     device.tune_servos(spec, model)
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)

@@ -116,7 +116,7 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
         # Webots drives a ball joint through an Euler angular motor: the endPoint turns by
         # q(axis, θ1)·q(axis2, θ2)·q(axis3, θ3), axis2 = axis3 × axis (WbBallJoint). Three hinges
         # in one MuJoCo body compose their turns in that order, so they are that joint exactly.
-        axis1, axis3 = _ball_axes(node)
+        axis1, axis3 = ball_axes(node)
         second = node.get("jointParameters2")
         third = node.get("jointParameters3")
         axes += [(first, first_type, "device", axis1), (second, "JointParameters", "device2", np.cross(axis3, axis1)),
@@ -190,18 +190,20 @@ def _round_wheels(body: mujoco.MjsBody, axis: np.ndarray) -> None:
             geom.size = [radius, radius, half_height]
 
 
-def _ball_axes(node: Node) -> tuple[np.ndarray, np.ndarray]:
-    """A BallJoint's first and third axes, as WbBallJoint derives a missing one from the other."""
+def ball_axes(node: Node) -> tuple[np.ndarray, np.ndarray]:
+    """A BallJoint's first and third axes, as WbBallJoint derives a missing one from the other.
+
+    The first axis is `jointParameters2`'s and the third `jointParameters3`'s; without both, x and z.
+    """
     second, third = node.get("jointParameters2"), node.get("jointParameters3")
     a = np.asarray(second.get("axis"), dtype=float) if isinstance(second, Node) else None
     c = np.asarray(third.get("axis"), dtype=float) if isinstance(third, Node) else None
+    if a is None and c is None:
+        return np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
     if a is None:
-        if c is None:
-            a = np.array([1.0, 0.0, 0.0])
-        else:
-            a = np.cross(c, [0.0, 0.0, 1.0])
-            if not np.any(a):
-                a = np.cross(c, [1.0, 0.0, 0.0])
+        a = np.cross(c, [0.0, 0.0, 1.0])
+        if not np.any(a):
+            a = np.cross(c, [1.0, 0.0, 0.0])
     if c is None:
         c = np.cross(a, [1.0, 0.0, 0.0])
         if not np.any(c):

@@ -29,8 +29,9 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller, textures
-from wbtc.compile.context import KINEMATIC_MASS, CompileContext, info
+from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller, textures, track
+from wbtc.compile.bodyless import make_kinematic
+from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.kinematic_drive import find_drive
 from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
@@ -215,6 +216,8 @@ class BodyBuilder:
             if linear or angular:
                 ctx.damped.append((free_joint.name, linear, angular))
         entry = device.add_device(node, body, robot, ctx, self) if robot is not None else None
+        if node.base_type == "Track":  # its devices come before its children's (Webots' device order)
+            track.add_track(self, node, body, robot)
         if robot is None and node.base_type == "Connector":
             device.add_loose_connector(node, body, ctx)
         self._walk_device_children(entry, node, body, inner, robot, moves)
@@ -317,9 +320,9 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
     if physics is None:
         # A static or merged Solid adds no mass; one that moves on a joint without Physics is moved
         # kinematically by Webots, and MuJoCo needs some inertia for a jointed body.
-        mass = KINEMATIC_MASS if on_joint else 0.0
-        body.mass = mass
-        body.inertia = [mass * 1e-4] * 3
+        body.mass, body.inertia = 0.0, [0.0] * 3
+        if on_joint:
+            make_kinematic(body)  # some mass, no gravity (Webots gives it no ODE body)
         return
     volume = sum(p.volume for p in props)
     density, given_mass = float(physics.get("density")), float(physics.get("mass"))

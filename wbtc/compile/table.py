@@ -43,6 +43,7 @@ class DeviceEntry:
         weld: for a VacuumGripper or a Connector, its (inactive) weld equality, which the runtime points at
             what it holds or docks to.
         legacy_axes: the device was written before R2022a (a Connector docked along its z axis then).
+        track: for a device in a Track's `device` field, the Track's body (it acts on no joint).
     """
 
     name: str
@@ -64,6 +65,7 @@ class DeviceEntry:
     textures: list[str] = field(default_factory=list)
     weld: str | None = None
     legacy_axes: bool = False
+    track: str | None = None
 
 
 @dataclass

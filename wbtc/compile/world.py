@@ -19,9 +19,8 @@
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
 
 Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
-single-threaded), `physicsDisable*`, `inkEvaporation`, `lineScale`; ContactProperties
-`frictionRotation`, `rollingFriction`, `bounce`, `bounceVelocity`, `forceDependentSlip`, `softERP`,
-`softCFM`; Fog; Background textures (a plain sky colour is used).
+single-threaded), `physicsDisable*`, `inkEvaporation`, `lineScale`; ContactProperties `bounce`,
+`bounceVelocity`, `forceDependentSlip`, `softERP`, `softCFM`; Fog; Background textures (a plain sky colour is used).
 """
 
 from __future__ import annotations
@@ -31,6 +30,7 @@ import math
 import mujoco
 import numpy as np
 
+from wbtc.compile import contact
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.device import CAMERA_QUAT
 from wbtc.compile.frames import IDENTITY_QUAT, NUE_TO_ENU, NUE_TO_ENU_QUAT, Frame, axis_angle_quat, quat_mul
@@ -39,8 +39,7 @@ from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
 _UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics", "inkEvaporation"})
-_UNHONOURED_CONTACT = frozenset({"frictionRotation", "rollingFriction", "bounce", "bounceVelocity",
-                                 "forceDependentSlip", "softERP", "softCFM"})
+_UNHONOURED_CONTACT = frozenset({"bounce", "bounceVelocity", "forceDependentSlip", "softERP", "softCFM"})
 #: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
 INFINITE_FRICTION = 100.0
 
@@ -163,11 +162,12 @@ def srgb_to_linear(value: float) -> float:
 
 def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
     """Friction of every collision geom from WorldInfo.contactProperties (see the module docstring)."""
-    default_mu, by_material = 1.0, {}
+    default_mu, by_material, laws = 1.0, {}, []
     for props in (info_node.get("contactProperties") if info_node is not None else None) or []:
         if not isinstance(props, Node):
             continue
         ctx.unhonoured(props, _UNHONOURED_CONTACT)
+        laws.append(contact.read_law(props))
         mu = _mu(props)
         pair = {str(props.get("material1")), str(props.get("material2"))}
         if pair == {"default"}:
@@ -188,6 +188,7 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
         mu = by_material.get(material, default_mu)
         geom.friction = [mu, 0.005, 0.0001]
         geom.priority = 1 if material in by_material else 0
+    contact.apply_contact_laws(laws, ctx, solref)
 
 
 def _mu(props: Node) -> float:

@@ -14,6 +14,7 @@ from typing import Any
 import mujoco
 
 from wbtc.compile.table import DeviceEntry, RobotEntry
+from wbtc.runtime import tracks
 from wbtc.runtime.devices import Receiver
 from wbtc.runtime.scene_ops import store_pose
 from wbtc.runtime.scene_tree import to_typed
@@ -42,17 +43,17 @@ def device_infos(entry: RobotEntry, start: int = 0) -> list[dict[str, Any]]:
     # The motor, position sensor and brake of each joint axis know each other's tags.
     axes: dict[tuple[str, int], dict[str, int]] = {}
     for tag, dev in enumerate(entry.devices):
-        if dev.joint:
+        if dev.joint or dev.track:
             role = "brake" if dev.type == "Brake" else "sensor" if dev.type == "PositionSensor" else "motor"
-            axes.setdefault((dev.joint, dev.axis), {}).setdefault(role, tag)
+            axes.setdefault((dev.joint or dev.track, dev.axis), {}).setdefault(role, tag)
     devices = []
     for tag, dev in enumerate(entry.devices):
         if tag < start:
             continue
         info: dict[str, Any] = {"tag": tag, "name": dev.name, "type": dev.type,
                                 "model": str(dev.fields.get("model", "") or ""), "fields": dev.fields}
-        mates = axes.get((dev.joint, dev.axis), {}) if dev.joint else {}
-        if dev.actuator or dev.propeller:
+        mates = axes.get((dev.joint or dev.track, dev.axis), {}) if dev.joint or dev.track else {}
+        if dev.actuator or dev.propeller or (dev.track and dev.type == "LinearMotor"):
             info.update(position=dev.initial_position, sensor=names.get(dev.sensor or ""), brake=mates.get("brake"))
         if dev.type == "PositionSensor":
             info.update(motor=names.get(dev.motor or ""), brake=mates.get("brake"))
@@ -108,6 +109,9 @@ def _brake(sim: Simulation, dev: DeviceEntry, damping: float) -> None:
     MuJoCo's Euler integrator treats joint damping implicitly, so even a brake of 10^4 holds the
     joint still without destabilising it. The joint's own dampingConstant is kept and added to.
     """
+    if dev.track:  # a Track's Brake damps its belt (runtime.tracks)
+        tracks.set_brake(sim, dev, damping)
+        return
     if not dev.joint:
         return
     model = sim.model

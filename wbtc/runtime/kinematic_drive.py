@@ -126,8 +126,9 @@ class DriveState:
             body = int(model.geom_bodyid[other])
             if body == self.body or int(model.body_weldid[body]) != 0 or other in self.geoms:
                 continue
-            if not (model.geom_contype[other] & model.geom_conaffinity[geom]
-                    or model.geom_contype[geom] & model.geom_conaffinity[other]):
+            # Any colliding geom: Webots bumps a kinematic robot off static Solids although two body-less
+            # geoms otherwise never touch (their contype/conaffinity bits keep MuJoCo from pairing them).
+            if not (model.geom_contype[other] or model.geom_conaffinity[other]):
                 continue
             out.append(int(other))
         return out

@@ -17,7 +17,7 @@ from __future__ import annotations
 import mujoco
 
 from wbtc.compile.compiler import CompileResult
-from wbtc.runtime import visibility
+from wbtc.runtime import tracks, visibility
 from wbtc.runtime.devices import Emitter, Led, Receiver
 from wbtc.runtime.joint_positions import moved_to_new_position
 from wbtc.runtime.kinematic_drive import DriveState
@@ -31,7 +31,8 @@ from wbtc.runtime.surface import SurfaceColours
 _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "available", "torque", "integral",
                 "prev_error", "command", "feedback_period", "feedback_due", "feedback_value")
 # `period` before `image_period`: a Camera's period is a property over its image and recognition periods.
-_SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due")
+_SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due",
+                 "segmentation_enabled")
 
 
 def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, by_name: bool = False) -> None:
@@ -120,6 +121,7 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
         for tag, motor in new.motors.items():
             if isinstance(old.motors.get(tag), Motor):
                 _copy(old.motors[tag], motor, _MOTOR_STATE)
+        tracks.carry_belts(old, new, sim.model)
         if old.battery is not None and new.battery is not None:  # the energy left, the sensor, the power
             old.battery.carry_to(new.battery, new.motors)
         for tag, led in new.leds.items():

@@ -18,9 +18,10 @@ import numpy as np
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
-from wbtc.runtime import conveyors
+from wbtc.runtime import conveyors, tracks
 from wbtc.runtime.battery import Battery
 from wbtc.runtime.connectors import Connector
+from wbtc.runtime.contact_frames import ContactFrames
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
@@ -64,6 +65,7 @@ class RobotState:
     dead_seen: int = 0  # how many of the scene tree's invalidated field ids this robot's controller knows
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
+    belts: dict[str, Any] = field(default_factory=dict)  # its Tracks' belts by body (runtime.tracks)
 
 
 class Simulation:
@@ -95,6 +97,7 @@ class Simulation:
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
+        self._frames: ContactFrames | None = None  # asymmetric-friction contacts, per model
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
@@ -145,20 +148,29 @@ class Simulation:
         (a servo reaching its velocity in the first substep would otherwise read almost 0).
         """
         motors = [m for r in self.robots for m in r.motors.values()
-                  if isinstance(m, Motor) and (m.feedback_period > 0 or m.metered)]
-        if not motors:
+                  if isinstance(m, Motor) and m.entry.actuator and (m.feedback_period > 0 or m.metered)]
+        substep = tracks.substep_function(self)  # mj_step, or one that moves the Tracks' belts
+        if substep is mujoco.mj_step and self.table.asymmetric_friction is not None:
+            substep = self._contact_frames(model).step  # Webots' asymmetric friction directions
+        if not motors and substep is mujoco.mj_step:
             mujoco.mj_step(model, data, nstep=self.substeps)
             return
         actuators = [m.actuator for m in motors]
         dofs = [m.dof_adr for m in motors]
         total = np.zeros(len(motors))
         for _ in range(self.substeps):
-            mujoco.mj_step(model, data)
+            substep(model, data)
             # The servo's armature (see compile.device.tune_servos) is no part of the robot: the torque
             # the joint receives is the actuator's less what accelerating the armature took.
             total += data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs]
         for motor, force in zip(motors, total / self.substeps, strict=True):
             motor.step_force = float(force)
+
+    def _contact_frames(self, model: mujoco.MjModel) -> ContactFrames:
+        """The asymmetric-friction contacts of `model` (made once per model: a recompile makes another)."""
+        if self._frames is None or self._frames.model is not model:
+            self._frames = ContactFrames(model, self.table.asymmetric_friction)
+        return self._frames
 
     def _move_kinematic(self, ts: float) -> None:
         """Advance the kinematically moving bodies by one step of their velocity (world frame)."""
@@ -193,7 +205,9 @@ class Simulation:
         return state
 
     def _device(self, state: RobotState, tag: int, dev: DeviceEntry) -> None:
-        if dev.actuator:
+        if dev.track:
+            tracks.add_device(self, state, tag, dev)
+        elif dev.actuator:
             state.motors[tag] = Motor(dev, self.model, state.entry.name)
         elif dev.propeller:
             state.motors[tag] = PropellerMotor(dev, self.model, state.entry.name)

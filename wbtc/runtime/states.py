@@ -7,13 +7,15 @@ so a state outlives a recompile (a spawned robot, a PROTO field change). `"__ini
 of the whole world when the run started, as in Webots. Loading a state restores what the state
 holds for the node's current subtree; what the state does not know is left alone.
 
-`setJointPosition(position, index)` sets a HingeJoint's, Hinge2Joint's or SliderJoint's position at
-once (index 2 is a Hinge2Joint's second axis). As in Webots, setting a joint's position also makes
-its motor target that position (Webots' joints do so when a supervisor sets them and when a state is
-loaded): a wheel turning in velocity control stops and holds there until its controller says more.
+`setJointPosition(position, index)` sets a HingeJoint's, Hinge2Joint's, SliderJoint's or BallJoint's
+position at once (index 2 is a Hinge2Joint's second axis, 2 and 3 a BallJoint's second and third),
+clamped to the hard limits (`minStop`, `maxStop`) of that axis's parameters with Webots' warning. As in
+Webots, setting a joint's position also makes its motor target that position (Webots' joints do so
+when a supervisor sets them and when a state is loaded): a wheel turning in velocity control stops
+and holds there until its controller says more. A BallJoint without devices is one MuJoCo ball joint:
+its other two positions are kept and its endPoint stops turning (see `wbtc.runtime.ball_joints`).
 
-Not honoured yet: BallJoint positions, and the fields of other nodes (a LED's colour, a Pen's ink)
-that Webots' states also hold.
+Not honoured yet: the fields of other nodes (a LED's colour, a Pen's ink) that Webots' states also hold.
 """
 
 from __future__ import annotations
@@ -25,6 +27,9 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
+from wbtc.compile.frames import quat_rotate
+from wbtc.compile.joint import ball_axes, param
+from wbtc.runtime.ball_joints import EulerAxes, ball_turn, current_angles
 from wbtc.runtime.poses import dof_width, solid_body
 from wbtc.runtime.simulation import descends
 from wbtc.scene.model import Node
@@ -96,23 +101,68 @@ def restore(sim: Simulation, root: int, state: State) -> None:
     mujoco.mj_forward(model, data)
 
 
-def set_joint_position(sim: Simulation, body: int, position: float, index: int) -> str | None:
-    """Set the `index`-th (1-based) joint of a Joint's endPoint body; an error message if it cannot be."""
+def set_joint_position(sim: Simulation, joint: Node, end: Node, position: float, index: int) -> str | None:
+    """Set the `index`-th (1-based) position of `joint`, whose endPoint is `end`; a message to print, if any.
+
+    The position is applied in every case but an invalid index (an error message); a position outside
+    the hard limits is clamped, with Webots' warning (WbSupervisorUtilities, C_SUPERVISOR_NODE_SET_JOINT_POSITION).
+    """
     model = sim.model
-    count = int(model.body_jntnum[body])
-    if not 1 <= index <= count:
+    body = solid_body(sim, end)
+    assert body is not None
+    count, first = int(model.body_jntnum[body]), int(model.body_jntadr[body])
+    ball = count == 1 and int(model.jnt_type[first]) == mujoco.mjtJoint.mjJNT_BALL
+    if not 1 <= index <= (3 if ball else count):
         return f"Error: wb_supervisor_node_set_joint_position(): invalid index {index} for this joint."
-    joint = int(model.body_jntadr[body]) + index - 1
-    if int(model.jnt_type[joint]) not in (mujoco.mjtJoint.mjJNT_HINGE, mujoco.mjtJoint.mjJNT_SLIDE):
-        return "Warning: wb_supervisor_node_set_joint_position() is not supported for a BallJoint by wbtc yet."
-    sim.data.qpos[int(model.jnt_qposadr[joint])] = position
-    name = model.joint(joint).name
-    for robot in sim.robots:  # the joint's motor now targets where the joint is (Webots' rule)
+    position, warning = _clamped(joint, index, position)
+    if ball:
+        _set_ball_position(sim, joint, end, body, index, position)
+    else:
+        _set_axis_position(sim, first + index - 1, position)
+    mujoco.mj_forward(model, sim.data)
+    return warning
+
+
+def _clamped(joint: Node, index: int, position: float) -> tuple[float, str | None]:
+    """The position within the hard limits of that axis's parameters, and Webots' warning when it was not."""
+    params = joint.get(("jointParameters", "jointParameters2", "jointParameters3")[index - 1])
+    if not isinstance(params, Node):
+        return position, None
+    low, high = float(params.get("minStop")), float(params.get("maxStop"))
+    if low == high == 0.0 or low <= position <= high:  # WbJointParameters::clampPosition
+        return position, None
+    applied = low if position < low else high
+    return applied, (f"Warning: wb_supervisor_node_set_joint_position() called with a 'position' argument {position:g} "
+                     f"outside hard limits of the joint. Applied position is {applied:g}.")
+
+
+def _set_axis_position(sim: Simulation, joint: int, position: float) -> None:
+    """A hinge's or slider's position, and its motor's target (Webots' rule)."""
+    sim.data.qpos[int(sim.model.jnt_qposadr[joint])] = position
+    name = sim.model.joint(joint).name
+    for robot in sim.robots:
         for motor in robot.motors.values():
             if motor.entry.joint == name:
                 motor.apply("setPosition", (position,))
-    mujoco.mj_forward(model, sim.data)
-    return None
+
+
+def _set_ball_position(sim: Simulation, joint: Node, end: Node, body: int, index: int, position: float) -> None:
+    """One of a device-less BallJoint's three positions; the other two stay, and the endPoint stops turning."""
+    model, data = sim.model, sim.data
+    frame = np.asarray(sim.table.solids[id(end)][2], dtype=float)  # the joint's frame in the parent body
+    axis, axis3 = ball_axes(joint)
+    axes = EulerAxes(quat_rotate(frame, axis), quat_rotate(frame, axis3))
+    start = np.array([float(param(joint.get(name), kind, "position")) for name, kind in
+                      (("jointParameters", "BallJointParameters"), ("jointParameters2", "JointParameters"),
+                       ("jointParameters3", "JointParameters"))])
+    written = np.asarray(model.body_quat[body], dtype=float)
+    jnt = int(model.body_jntadr[body])
+    qpos, dof = int(model.jnt_qposadr[jnt]), int(model.jnt_dofadr[jnt])
+    angles = current_angles(axes, written, np.array(data.qpos[qpos:qpos + 4]), start)
+    angles[index - 1] = position
+    data.qpos[qpos:qpos + 4] = ball_turn(axes, written, angles, start)
+    data.qvel[dof:dof + 3] = 0.0  # Webots resets the endPoint's physics as it moves it (WbBallJoint::updatePositions)
+    data.qacc_warmstart[dof:dof + 3] = 0.0
 
 
 def subtree_root(sim: Simulation, node: object, parent_of: Callable[[Node], Node | None]) -> int:
@@ -128,7 +178,7 @@ def subtree_root(sim: Simulation, node: object, parent_of: Callable[[Node], Node
 
 def node_op(sim: Simulation, saved: dict[str, State], op: str, node: Node, args: tuple,
             parent_of: Callable[[Node], Node | None]) -> str | None:
-    """Apply `node.saveState`/`loadState`/`setJointPosition`; an error message when it cannot be done."""
+    """Apply `node.saveState`/`loadState`/`setJointPosition`; a message to print (an error, or a warning)."""
     if op == "saveState":
         saved[str(args[0])] = capture(sim, subtree_root(sim, node, parent_of))
     elif op == "loadState":
@@ -138,8 +188,7 @@ def node_op(sim: Simulation, saved: dict[str, State], op: str, node: Node, args:
         restore(sim, subtree_root(sim, node, parent_of), state)
     elif op == "setJointPosition":
         end = node.get("endPoint") if node.base_type in JOINT_TYPES else None
-        body = solid_body(sim, end) if isinstance(end, Node) else None
-        if body is None:
+        if not isinstance(end, Node) or solid_body(sim, end) is None:
             return "Error: wb_supervisor_node_set_joint_position() can only be used with a Joint node with an endPoint."
-        return set_joint_position(sim, body, float(args[0]), int(args[1]))
+        return set_joint_position(sim, node, end, float(args[0]), int(args[1]))
     return None

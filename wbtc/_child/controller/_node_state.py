@@ -22,6 +22,14 @@ NAN = _session.NAN
 _error = _session.error
 _warned: set[str] = set()
 
+# The axes of each joint type, and the C library's message for an index past them.
+_JOINT_AXES = {
+    "SliderJoint": (1, "SliderJoint and HingeJoint only support index 1."),
+    "HingeJoint": (1, "SliderJoint and HingeJoint only support index 1."),
+    "Hinge2Joint": (2, "Hinge2Joint only supports index 1 or 2."),
+    "BallJoint": (3, "BallJoint only supports index 1, 2, or 3."),
+}
+
 
 def deprecated(function: str, replacement: str) -> None:
     """Webots' once-per-process deprecation warning of the C library.
@@ -69,6 +77,7 @@ class NodeState:
         _id: int
         _valid: bool
         _descendants: bool
+        _base_type: str
 
         def _ok(self, function: str, article: str = "a ") -> bool: ...
 
@@ -213,7 +222,20 @@ class NodeState:
             self._queue("node.loadState", str(stateName))
 
     def setJointPosition(self, position: float, index: int = 1) -> None:
-        """Set this Joint's position (rad or m) at once; ``index`` 2 is a Hinge2Joint's second axis."""
+        """Set this Joint's position (rad or m) at once; ``index`` 2, 3: a Hinge2Joint's or BallJoint's next axes."""
         function = "wb_supervisor_node_set_joint_position"
-        if self._ok(function):
-            self._queue("node.setJointPosition", float(position), int(index))
+        if not self._ok(function):
+            return
+        index = int(index)
+        if index < 1:
+            _error(f"Error: {function}() called with an invalid 'index'. Only values greater than or equal to 1 are "
+                   "supported.")
+            return
+        axes = _JOINT_AXES.get(self._base_type)
+        if axes is None:
+            _error(f"Error: {function}() called with a 'node' argument which is not a joint node.")
+            return
+        if index > axes[0]:
+            _error(f"Error: {function}() called with an invalid 'index'. {axes[1]}")
+            return
+        self._queue("node.setJointPosition", float(position), index)
