@@ -175,3 +175,42 @@ def test_image_is_black_between_the_first_step_and_the_first_sample(sim) -> None
     rc, out, _ = fake.finish()
     assert rc == 0
     assert out.splitlines() == ["True", "00" * 4 * WIDTH * HEIGHT, IMAGE[:4].hex()]
+
+
+def test_segmentation_image_follows_the_enable_and_the_field(sim, tmp_path) -> None:
+    cameras = [device(0, "camera", "Camera", {"width": WIDTH, "height": HEIGHT,
+                                              "recognition": {"fields": {"segmentation": True}}})]
+    fake = sim(
+        """
+        import json
+        from controller import Robot
+        robot = Robot()
+        camera = robot.getDevice("camera")
+        camera.recognitionEnable(32)
+        print(json.dumps([camera.hasRecognitionSegmentation(), camera.getRecognitionSegmentationImage()]))
+        camera.enableRecognitionSegmentation()
+        robot.step()
+        image = camera.getRecognitionSegmentationImage()
+        print(json.dumps([camera.isRecognitionSegmentationEnabled(), image.hex(),
+                          camera.getRecognitionSegmentationImageArray(),
+                          camera.saveRecognitionSegmentationImage("segmentation.png", 100)]))
+        camera.disableRecognitionSegmentation()
+        print(json.dumps(camera.getRecognitionSegmentationImage()))
+        robot.step()
+        print(json.dumps(camera.hasRecognitionSegmentation()))
+        camera.enableRecognitionSegmentation()
+        """,
+        make_init(cameras),
+    )
+    assert fake.step(values={0: {"objects": [], "has_segmentation": True, "segmentation": IMAGE}}) == (
+        32, [(0, "recognitionEnable", 32), (0, "enableSegmentation")])
+    # A supervisor turned the Recognition node's segmentation field off.
+    assert fake.step(values={0: {"objects": [], "has_segmentation": False}}) == (32, [(0, "disableSegmentation")])
+    rc, out, err = fake.finish()
+    assert rc == 0
+    quirk = _expected_lines()[3]
+    assert json_lines(out) == [[True, None], [True, IMAGE.hex(), quirk, 0], None, False]
+    assert err.splitlines() == [
+        "Error: wb_camera_recognition_enable_segmentation(): segmentation is disabled in Recognition node."]
+    rgba = bytes(b for i in range(0, len(IMAGE), 4) for b in (IMAGE[i + 2], IMAGE[i + 1], IMAGE[i], IMAGE[i + 3]))
+    assert _png_pixels(tmp_path / "segmentation.png") == rgba

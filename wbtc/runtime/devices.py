@@ -8,7 +8,9 @@
   controller reads (`{"shm": name}`); a new block, under a new name, when the size changes; plain
   bytes in the message when shared memory is unavailable. `Simulation.close` unlinks the blocks.
   `noise` adds Gaussian noise of σ = noise × 255 to every channel (none with noise off). With a
-  Recognition node, `recognitionEnable(p)` adds `"objects"` to a sample every p ms (see `recognition`).
+  Recognition node, `recognitionEnable(p)` adds `"objects"` to a sample every p ms (see `recognition`),
+  with `"has_segmentation"` (the node's `segmentation` field) and, once the controller enabled it,
+  the `"segmentation"` image (see `segmentation`).
 - Emitter/Receiver: packets sent during a step reach the receivers of the same type (radio,
   serial, infra-red) on the same channel (−1 on either side: every channel), on other robots,
   within `range` at the next basic step; radio ignores obstacles,
@@ -33,6 +35,8 @@ import numpy as np
 from wbtc.compile.device import led_material
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry, plain_fields
+from wbtc.runtime import segmentation
+from wbtc.runtime.camera_projection import Optics
 from wbtc.runtime.recognition import Settings, Target, recognize, targets
 from wbtc.runtime.sensors import Sensor
 from wbtc.scene.model import Node
@@ -110,6 +114,7 @@ class Camera(Sensor):
         self.image_period = 0
         self.recognition_period = 0
         self.recognition_due = math.inf
+        self.segmentation_enabled = False
         super().__init__(entry, sim, skip_bodies)
         self.sim = sim
         self.width = int(entry.fields.get("width", 64))
@@ -126,6 +131,7 @@ class Camera(Sensor):
         self.recognition = Settings.of(plain_fields(recognition)) if isinstance(recognition, Node) else None
         self._targets: list[Target] | None = None
         self._targets_model: Any = None
+        self._colours: tuple[Any, np.ndarray] | None = None  # (model, segmentation colour of each geom)
         self.block: shared_memory.SharedMemory | None = None
         self.pixels: np.ndarray | None = None  # (height, width, 4) BGRA, over the block when there is one
         self._finalizer: weakref.finalize | None = None
@@ -178,7 +184,7 @@ class Camera(Sensor):
             self.next_due += self.image_period
         if self.recognition_period > 0 and now_ms + 1e-9 >= self.recognition_due:
             base = value or {"shm": None, "data": None, "width": self.width, "height": self.height}
-            value = {**base, "objects": self.recognize(sim)}
+            value = {**base, "objects": self.recognize(sim), **self.segment(sim)}
             self.recognition_due += self.recognition_period
         if value is None:
             return
@@ -194,8 +200,27 @@ class Camera(Sensor):
         if self._targets is None or self._targets_model is not sim.model:
             self._targets, self._targets_model = targets(sim), sim.model
         pos, mat = self.frame(sim)
-        return recognize(sim, self._targets, np.asarray(pos), mat, self.fov, self.width, self.height,
-                         self.recognition, self.skip_bodies)
+        return recognize(sim, self._targets, np.asarray(pos), mat, self.optics(), self.recognition, self.skip_bodies)
+
+    def segment(self, sim: Simulation) -> dict[str, Any]:
+        """Whether the Recognition node has `segmentation` on, and the segmentation image when it is asked for.
+
+        Webots turns the segmentation off when the field goes FALSE; the image (BGRA bytes) travels in
+        the message.
+        """
+        allowed = self.recognition is not None and self.recognition.segmentation
+        self.segmentation_enabled = self.segmentation_enabled and allowed
+        if not self.segmentation_enabled:
+            return {"has_segmentation": allowed}
+        if self._colours is None or self._colours[0] is not sim.model:
+            self._colours = (sim.model, segmentation.geom_colours(sim.model, getattr(sim.table, "recognizable", [])))
+        pos, mat = self.frame(sim)
+        image = segmentation.render(sim, np.asarray(pos), mat, self.optics(), self._colours[1])
+        return {"has_segmentation": True, "segmentation": image.tobytes()}
+
+    def optics(self) -> Optics:
+        """The camera's image geometry."""
+        return Optics(self.fov, self.width, self.height, self.projection)
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""

@@ -100,6 +100,7 @@ class Camera(Sensor):
         state.has_recognition = recognition is not None
         state.segmentation = bool(recognition.get("segmentation", False)) if recognition else False
         state.segmentation_enabled = False
+        state.segmentation_image = None
         state.recognition_period = 0
         state.objects = []
         state.value = None
@@ -112,6 +113,13 @@ class Camera(Sensor):
             state.value = image
         if value.get("objects") is not None:
             state.objects = [CameraRecognitionObject(obj) for obj in value["objects"]]
+        if value.get("has_segmentation") is not None:
+            # Webots tells the controller when the Recognition node's `segmentation` field changes,
+            # and turning it off turns the segmentation images off.
+            state.segmentation = bool(value["has_segmentation"])
+            state.segmentation_enabled = state.segmentation_enabled and state.segmentation
+        if value.get("segmentation") is not None:
+            state.segmentation_image = bytes(value["segmentation"])
 
     # -- image ----------------------------------------------------------------------------------------------
     @checked("get_image")
@@ -339,7 +347,7 @@ class Camera(Sensor):
 
     @checked("recognition_enable_segmentation")
     def enableRecognitionSegmentation(self) -> None:
-        """Ask for segmentation images (wbtc renders none: the image stays None)."""
+        """Ask for segmentation images, made with each recognition sample."""
         if not self._recognition_enabled("wb_camera_recognition_enable_segmentation"):
             return
         if not self._s.segmentation:
@@ -348,12 +356,15 @@ class Camera(Sensor):
             )
             return
         self._s.segmentation_enabled = True
+        self._queue("enableSegmentation")
 
     @checked("recognition_disable_segmentation")
     def disableRecognitionSegmentation(self) -> None:
         """Stop asking for segmentation images."""
         if self._recognition("wb_camera_recognition_disable_segmentation"):
             self._s.segmentation_enabled = False
+            self._s.segmentation_image = None
+            self._queue("disableSegmentation")
 
     @checked("recognition_is_segmentation_enabled", False)
     def isRecognitionSegmentationEnabled(self) -> bool:
@@ -363,16 +374,33 @@ class Camera(Sensor):
 
     @checked("recognition_get_segmentation_image")
     def getRecognitionSegmentationImage(self) -> bytes | None:
-        """The segmentation image: always None in wbtc."""
-        return None
+        """The last segmentation image (BGRA, like `getImage`); None while segmentation is off.
+
+        Until the first one arrives, a black image (Webots fills the image memory with opaque black).
+        """
+        state = self._s
+        if not state.segmentation_enabled:
+            return None
+        if state.segmentation_image is None:
+            return bytes([0, 0, 0, 255]) * (self.getWidth() * self.getHeight())
+        return state.segmentation_image
 
     def getRecognitionSegmentationImageArray(self) -> list[list[list[int]]] | None:
-        """The segmentation image as an array: always None in wbtc."""
-        return None
+        """The segmentation image as ``width`` lists of ``height`` [r, g, b] pixels, as `getImageArray`."""
+        image = self.getRecognitionSegmentationImage()
+        if not image:
+            return None
+        width, height = self.getWidth(), self.getHeight()
+        pixels = iter(range(0, 4 * width * height, 4))
+        return [[[image[i + 2], image[i + 1], image[i]] for i in (next(pixels) for _ in range(height))]
+                for _ in range(width)]
 
     def saveRecognitionSegmentationImage(self, filename: str, quality: int) -> int:
-        """Save the segmentation image: always fails (-1) in wbtc."""
-        return -1
+        """Save the segmentation image as PNG or JPEG; returns 0 on success, -1 otherwise (none to save)."""
+        image = self.getRecognitionSegmentationImage()
+        rgba = None if image is None else _images.bgra_to_rgba(image)
+        return _images.save_image("wb_camera_recognition_save_segmentation_image", filename, quality,
+                                  self._s.width, self._s.height, rgba)
 
     image = property(getImage, doc="The last image.")
     segmentation_image = property(getRecognitionSegmentationImage, doc="The last segmentation image.")

@@ -36,8 +36,8 @@ Step, child -> simulator
     * LED ``("set", int)``; Pen ``("write", bool)``, ``("setInkColor", rgb_int, density)``;
     * Emitter ``("send", bytes)``, ``("setChannel", c)``, ``("setRange", r)``; Receiver ``("setChannel", c)``;
     * Camera ``("setFov", f)``, ``("setExposure", e)``, ``("setFocalDistance", d)``, ``("recognitionEnable", p)``,
-      ``("recognitionDisable",)``; Lidar ``("enablePointCloud",)``, ``("disablePointCloud",)``,
-      ``("setFrequency", f)``;
+      ``("recognitionDisable",)``, ``("enableSegmentation",)``, ``("disableSegmentation",)``; Lidar
+      ``("enablePointCloud",)``, ``("disablePointCloud",)``, ``("setFrequency", f)``;
     * Speaker, Display, Brake, Connector, VacuumGripper, Skin: the method name with its arguments, e.g.
       ``(left, "playSound", right_tag, sound, volume, pitch, balance, loop)``, ``("drawLine", x1, y1, x2, y2)``.
       Display image handles are ints allocated by the child and passed first (``("imageNew", handle, data,
@@ -52,8 +52,9 @@ Step reply, simulator -> child
     force-3d, Accelerometer, Gyro, Compass -> [3 floats]; GPS -> [x, y, z, vx, vy, vz]; InertialUnit -> [x, y, z, w];
     Receiver -> list of (data: bytes, channel: int, signal_strength: float, direction: [3 floats]) appended to its
     queue; Camera -> {"shm": shared-memory block name or None, "data": BGRA bytes or None, "width", "height",
-    "objects": [recognition dicts] (optional)}; Lidar -> {"ranges": [floats], "points": [(x, y, z, layer, time)]
-    (optional)}; RangeFinder -> {"ranges": [floats]} or a camera-like dict of float32 bytes; Radar -> list of
+    "objects": [recognition dicts], "has_segmentation": bool, "segmentation": BGRA bytes (optional)}; Lidar ->
+    {"ranges": [floats], "points": [(x, y, z, layer, time)] (optional)}; RangeFinder -> {"ranges": [floats]} or a
+    camera-like dict of float32 bytes; Radar -> list of
     (distance, received_power, speed, azimuth); Connector/VacuumGripper presence -> int. ``keys`` lists the keys
     down at that keyboard sample. After status -1, ``step()`` returns -1 for good and the process has one second
     to exit; a closed socket also makes ``step()`` return -1.
