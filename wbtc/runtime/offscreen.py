@@ -84,6 +84,9 @@ class Offscreen:
         """
         self.camera_light = camera_light
         self.light_boost = light_boost
+        self._seen: list[bytes] = []  # the model's lighting arrays when last seen, as bytes
+        self._source: list[np.ndarray] = []  # the same, as arrays
+        self._dimmed: list[np.ndarray] = []  # the camera's values of them
         self.invisible = invisible if invisible is not None else {}
         self.textures = textures if textures is not None else {}
         self.uploaded: dict[int, int] = {}
@@ -236,40 +239,54 @@ class Offscreen:
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
         return tone.apply(self.pixels, exposure)
 
-    def _dim(self) -> tuple[np.ndarray, ...]:
-        """Divide the model's lights and emissions by the tone headroom; returns what to put back.
+    def _lighting(self) -> list[np.ndarray]:
+        """The model arrays a camera draws with other values than the viewer (views, written in place)."""
+        model, head = self.model, self.model.vis.headlight
+        return [model.light_ambient, model.light_diffuse, model.light_specular, model.mat_emission,
+                head.ambient, head.diffuse, head.specular, model.mat_rgba, model.geom_rgba]
+
+    def _dim(self) -> list[np.ndarray]:
+        """Put the camera's lighting into the model; returns the arrays for `_restore` to put back.
 
         `mjv_updateScene` copies them into the scene, so the model holds its own values again before
-        anything else (the viewer, the next step) reads it.
+        anything else (the viewer, the next step) reads it. The camera's values are worked out again
+        only when the model's changed (an LED, a supervisor's write): comparing costs less.
         """
-        model, head = self.model, self.model.vis.headlight
-        saved = (model.light_ambient.copy(), model.light_diffuse.copy(), model.light_specular.copy(),
-                 model.mat_emission.copy(), head.ambient.copy(), head.diffuse.copy(), head.specular.copy(),
-                 model.mat_rgba.copy(), model.geom_rgba.copy())
+        arrays = self._lighting()
+        seen = [a.tobytes() for a in arrays]  # bytes compare faster than np.array_equal on small arrays
+        if seen != self._seen:
+            self._seen = seen
+            self._source = [a.copy() for a in arrays]
+            self._dimmed = self._camera_lighting([a.copy() for a in arrays])
+        for array, value in zip(arrays, self._dimmed, strict=True):
+            np.copyto(array, value)
+        return arrays
+
+    def _camera_lighting(self, arrays: list[np.ndarray]) -> list[np.ndarray]:
+        """The camera's values of `_lighting`'s arrays (given as copies of the model's, changed in place)."""
+        ambient, diffuse, specular, emission, head_ambient, head_diffuse, head_specular, mat_rgba, geom_rgba = arrays
+        model = self.model
         # Colours are sRGB in the model (the viewer shows them as they are); Webots lights linear ones.
-        model.mat_rgba[:, :3] = tone.linear(model.mat_rgba[:, :3])
-        model.geom_rgba[:, :3] = tone.linear(model.geom_rgba[:, :3])
+        mat_rgba[:, :3] = tone.linear(mat_rgba[:, :3])
+        geom_rgba[:, :3] = tone.linear(geom_rgba[:, :3])
         if self.camera_light is not None and len(self.camera_light) == model.nmat:
             # Each material's own ambient and emission stand in for the lights' shared ambient, and
             # its colour takes the share of direct light Webots' shader gives it.
-            model.mat_emission[:] = self.camera_light[:, 0]
-            model.mat_rgba[:, :3] *= self.camera_light[:, 1:2]
+            emission[:] = self.camera_light[:, 0]
+            mat_rgba[:, :3] *= self.camera_light[:, 1:2]
             with_material = model.geom_matid >= 0  # their own rgba, when set, replaces the material's
-            model.geom_rgba[with_material, :3] *= self.camera_light[model.geom_matid[with_material], 1:2]
-            model.light_ambient[:] = 0.0
+            geom_rgba[with_material, :3] *= self.camera_light[model.geom_matid[with_material], 1:2]
+            ambient[:] = 0.0
         if self.light_boost is not None and len(self.light_boost) == model.nlight:
-            model.light_diffuse *= self.light_boost[:, None]
-            model.light_specular *= self.light_boost[:, None]
-        scale = 1.0 / tone.HEADROOM
-        for array in (model.light_ambient, model.light_diffuse, model.light_specular, model.mat_emission,
-                      head.ambient, head.diffuse, head.specular):
-            array *= scale
-        return saved
+            diffuse *= self.light_boost[:, None]
+            specular *= self.light_boost[:, None]
+        for array in (ambient, diffuse, specular, emission, head_ambient, head_diffuse, head_specular):
+            array /= tone.HEADROOM
+        return arrays
 
-    def _restore(self, saved: tuple[np.ndarray, ...]) -> None:
-        model, head = self.model, self.model.vis.headlight
-        (model.light_ambient[...], model.light_diffuse[...], model.light_specular[...], model.mat_emission[...],
-         head.ambient[...], head.diffuse[...], head.specular[...], model.mat_rgba[...], model.geom_rgba[...]) = saved
+    def _restore(self, arrays: list[np.ndarray]) -> None:
+        for array, value in zip(arrays, self._source, strict=True):
+            np.copyto(array, value)
 
     def _add_spot(self, centre: np.ndarray, normal: np.ndarray, radius: float) -> None:
         """A laser's red disc in the scene, facing along `normal`.
