@@ -338,3 +338,25 @@ def test_a_recompile_keeps_the_belts_travel(tmp_path):
     sim.step()
     assert belt.position == pytest.approx(0.011)
     sim.close()
+
+
+@pytest.mark.parametrize(("rotation", "least", "most"), [("0 0", 0.0, 0.03), ("1.5708 1.5708", 0.09, 0.11)])
+def test_belts_drive_on_a_floor_with_asymmetric_friction(tmp_path, rotation, least, most):
+    # Both contact rules act in the same substep: the floor's friction is 0.002 along its x axis and 2
+    # across it (Webots' formula for two aligned directions of [0.001 1]). Belts pushing along the
+    # slippery direction barely move the robot; turned a quarter, the same belts drive it at their speed.
+    world = WORLD.replace("WorldInfo {", "WorldInfo {\n  contactProperties [ ContactProperties { "
+                          f"coulombFriction [ 0.001 1 ] frictionRotation {rotation} }} ]")
+    sim = _sim(tmp_path, world)
+    assert sim.table.asymmetric_friction is not None
+    for side in ("left", "right"):
+        motor = _device(sim, f"{side} motor")[1]
+        motor.apply("setPosition", (math.inf,))
+        motor.apply("setVelocity", (0.1,))
+    for _ in range(10):
+        sim.step()
+    start = float(sim.data.xpos[sim.robots[0].body][0])
+    for _ in range(50):
+        sim.step()
+    assert least <= float(sim.data.xpos[sim.robots[0].body][0]) - start <= most
+    sim.close()

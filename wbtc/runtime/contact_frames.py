@@ -51,12 +51,16 @@ class ContactFrames:
     def step(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """One mj_step of `model` (this one's) with Webots' friction directions on the asymmetric contacts."""
         mujoco.mj_step1(model, data)
+        self.orient(model, data)
+        mujoco.mj_step2(model, data)
+
+    def orient(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """Between `mj_step1` and `mj_step2`: turn the asymmetric contacts and rebuild the constraints."""
         if self._orient(data):
             mujoco.mj_makeConstraint(model, data)
             mujoco.mj_island(model, data)
             mujoco.mj_projectConstraint(model, data)
             mujoco.mj_referenceConstraint(model, data)
-        mujoco.mj_step2(model, data)
 
     def _orient(self, data: mujoco.MjData) -> bool:
         """Set the frames and sliding coefficients of this step's asymmetric contacts; whether any were."""

@@ -149,9 +149,7 @@ class Simulation:
         """
         motors = [m for r in self.robots for m in r.motors.values()
                   if isinstance(m, Motor) and m.entry.actuator and (m.feedback_period > 0 or m.metered)]
-        substep = tracks.substep_function(self)  # mj_step, or one that moves the Tracks' belts
-        if substep is mujoco.mj_step and self.table.asymmetric_friction is not None:
-            substep = self._contact_frames(model).step  # Webots' asymmetric friction directions
+        substep = self._substep(model)
         if not motors and substep is mujoco.mj_step:
             mujoco.mj_step(model, data, nstep=self.substeps)
             return
@@ -165,6 +163,29 @@ class Simulation:
             total += data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs]
         for motor, force in zip(motors, total / self.substeps, strict=True):
             motor.step_force = float(force)
+
+    def _substep(self, model: mujoco.MjModel) -> Any:
+        """`mj_step`, or a step split where Webots' contact rules act on this substep's contacts.
+
+        Between MuJoCo's two halves, asymmetric-friction contacts are turned to Webots' friction
+        directions (which rebuilds the constraints), then Tracks' belt contacts get their velocity.
+        """
+        hooks = []
+        if self.table.asymmetric_friction is not None:
+            hooks.append(self._contact_frames(model).orient)
+        belts = tracks.surface_hook(self)
+        if belts is not None:
+            hooks.append(belts)
+        if not hooks:
+            return mujoco.mj_step
+
+        def step(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+            mujoco.mj_step1(model, data)
+            for hook in hooks:
+                hook(model, data)
+            mujoco.mj_step2(model, data)
+
+        return step
 
     def _contact_frames(self, model: mujoco.MjModel) -> ContactFrames:
         """The asymmetric-friction contacts of `model` (made once per model: a recompile makes another)."""

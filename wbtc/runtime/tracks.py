@@ -187,22 +187,24 @@ def carry_belts(old: RobotState, new: RobotState, model: mujoco.MjModel) -> None
         belt.pose(model)
 
 
-def substep_function(sim: Simulation) -> Any:
-    """The function taking one MuJoCo substep: `mj_step`, or the split step that moves the belts' surfaces."""
+def surface_hook(sim: Simulation) -> Any:
+    """None without moving belts, else the function that gives their contacts the belts' velocities.
+
+    It runs between `mj_step1` and `mj_step2` of each substep (the simulation splits its steps then),
+    after anything that rebuilds the constraints (see `wbtc.runtime.contact_frames`).
+    """
     belts = [b for r in sim.robots for b in r.belts.values() if b.motor is not None and b.geoms]
     if not belts:
-        return mujoco.mj_step
+        return None
     owner = np.full(sim.model.ngeom, -1, dtype=int)
     for index, belt in enumerate(belts):
         owner[belt.geoms] = index
 
-    def step(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-        mujoco.mj_step1(model, data)
+    def hook(model: mujoco.MjModel, data: mujoco.MjData) -> None:
         if any(b.contact_velocity for b in belts):
             move_surfaces(model, data, belts, owner)
-        mujoco.mj_step2(model, data)
 
-    return step
+    return hook
 
 
 def move_surfaces(model: mujoco.MjModel, data: mujoco.MjData, belts: list[Belt], owner: np.ndarray) -> None:
