@@ -1,12 +1,18 @@
-"""RangeFinder: planar depth from the device camera, inf out of range, NaN before the first sample, .hdr files."""
+"""RangeFinder: planar depth from the device camera, inf out of range, NaN before the first sample, .hdr files,
+semi-transparent shapes seen and the sky not."""
 
 import math
 from pathlib import Path
 
+import mujoco
+import numpy as np
 from conftest import project_with_controller
 from typer.testing import CliRunner
 
 from wbtc.cli import app
+from wbtc.pipeline import compile_world
+from wbtc.runtime.range_finder import RangeFinder
+from wbtc.runtime.simulation import Simulation
 
 WORLD = """#VRML_SIM R2025a utf8
 WorldInfo {
@@ -85,3 +91,60 @@ def test_a_cylindrical_range_finder_sees_all_around_along_its_rays(tmp_path: Pat
     assert abs(row[7] - 1.3 / math.cos(math.pi / 16)) < 1e-3 and abs(row[8] - row[7]) < 1e-6
     # ±3π/16 (0.87 m aside) misses the box; nothing else is around, behind included.
     assert all(math.isinf(row[c]) for c in range(16) if c not in (7, 8))
+
+
+SKY_WORLD = """#VRML_SIM R2025a utf8
+WorldInfo {
+}
+Background {
+  skyColor [
+    0.4 0.7 1
+  ]
+}
+Solid {
+  translation 1.5 0 0
+  children [
+    Shape {
+      appearance Appearance {
+        material Material {
+          transparency 0.5
+        }
+      }
+      geometry Box {
+        size 0.1 0.6 0.6
+      }
+    }
+  ]
+}
+Robot {
+  children [
+    RangeFinder {
+      width 16
+      height 16
+      fieldOfView 1.5708
+      minRange 1
+      maxRange 3
+    }
+  ]
+}
+"""
+
+
+def test_a_range_finder_sees_semi_transparent_shapes_and_not_the_sky(tmp_path: Path):
+    # Webots' range_finder test reads a transparency 0.5 plane as any other shape and the sky as inf.
+    # MuJoCo's renderer writes its skybox sphere (here about 1.5 m out) into the depth buffer and draws
+    # blended geoms without depth: both would read wrong without the range finder's own depth pass.
+    (tmp_path / "w.wbt").write_text(SKY_WORLD)
+    result, _ = compile_world(tmp_path / "w.wbt")
+    sim = Simulation(result)
+    sensor = next(s for s in sim.robots[0].sensors.values() if isinstance(s, RangeFinder))
+    image = np.array(sensor.sample(sim)["ranges"]).reshape(16, 16)
+    # The box's near face, 1.45 m ahead, fills the middle (±0.3 m is ±3.3 pixels of 16 at 1.45 m).
+    assert np.allclose(image[6:10, 6:10], 1.45, atol=2e-3)
+    # Around it only sky: nothing within 3 m.
+    assert np.isinf(image[:, :3]).all() and np.isinf(image[:3, :]).all() and np.isinf(image[13:, 13:]).all()
+    # The renderer is shared with colour cameras of the same size: the sky and the alpha are back.
+    renderer = sim.renderer(16, 16)
+    assert renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SKYBOX] == 1
+    assert 0 < sim.model.mat_rgba[:, 3].min() < 1
+    sim.close()

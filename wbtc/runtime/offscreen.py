@@ -159,8 +159,22 @@ class Offscreen:
         """Render model camera `camera` and read its depth: metres to the image plane, rows from the bottom.
 
         The frustum runs from `near` to `far`; where nothing is drawn before `far` the depth is inf.
+        What it sees is what Webots' range finders see: every visual shape, semi-transparent ones
+        included (Webots draws them with an opaque depth material), and no sky (MuJoCo would write
+        its skybox, a sphere as big as the model's far plane, into the depth buffer). Alpha 0
+        (transparency 1) stays undrawn.
         """
-        self.draw(data, camera, near, far=far)
+        model, flags = self.model, self.scene.flags
+        sky = int(flags[mujoco.mjtRndFlag.mjRND_SKYBOX])
+        geom_alpha, mat_alpha = model.geom_rgba[:, 3].copy(), model.mat_rgba[:, 3].copy()
+        flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = 0
+        model.geom_rgba[(geom_alpha > 0) & (geom_alpha < 1), 3] = 1.0
+        model.mat_rgba[(mat_alpha > 0) & (mat_alpha < 1), 3] = 1.0
+        try:
+            self.draw(data, camera, near, far=far)
+        finally:  # the renderer and the model are shared with colour cameras of the same size
+            flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = sky
+            model.geom_rgba[:, 3], model.mat_rgba[:, 3] = geom_alpha, mat_alpha
         raw = np.empty((self.height, self.width), dtype=np.float32)
         mujoco.mjr_readPixels(None, raw, self.rect, self.context)
         # MuJoCo reads depth 0 at the near plane and 1 at the far one (its default mjDEPTH_ZERONEAR);

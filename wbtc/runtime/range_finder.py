@@ -2,13 +2,19 @@
 
 `projection "planar"` (the default): each sample renders the device camera with its frustum from
 `near` to `maxRange` and reads the depth buffer back as metres to the image plane (planar depth,
-not the distance along the ray), rows from the top. `"cylindrical"` and `"spherical"`: pixel (i, j)
-looks at azimuth θⱼ = fov/2 − (j + ½)·fov/w and elevation φᵢ = vfov/2 − (i + ½)·vfov/h, with the
-vertical field of view vfov = fov·h/w (square angular pixels), and reads the distance along that
-ray, cast as a depth camera sees (`visible_rays`: visual shapes, front faces, beyond `near`); so a
-field of view up to 2π works. A range below `minRange`, or where nothing is seen before `maxRange`,
-reads inf. `noise` adds a Gaussian of σ = noise × maxRange to every pixel; `resolution` rounds
-ranges to its multiples.
+not the distance along the ray), rows from the top. What the depth pass sees is what Webots' range
+finder sees: every visual shape, semi-transparent ones included (the range_finder test reads a
+transparency 0.5 plane 2 m ahead as 2.0), and no sky. MuJoCo's renderer would otherwise write its
+skybox (a sphere whose radius follows the model's far plane: 2.1 m in that test's world) into the
+depth buffer and draw blended geoms without writing depth, so `Offscreen.depth` turns both off.
+
+`"cylindrical"` and `"spherical"`: pixel (i, j) looks at azimuth θⱼ = fov/2 − (j + ½)·fov/w and
+elevation φᵢ = vfov/2 − (i + ½)·vfov/h, with the vertical field of view vfov = fov·h/w (square
+angular pixels), and reads the distance along that ray, cast as a depth camera sees (`visible_rays`:
+visual shapes, front faces, beyond `near`); so a field of view up to 2π works.
+
+A range below `minRange`, or where nothing is seen before `maxRange`, reads inf. `noise` adds a
+Gaussian of σ = noise × maxRange to every pixel; `resolution` rounds ranges to its multiples.
 
 Not honoured yet: `motionBlur`, `lens` distortion; Webots renders a non-planar projection through a
 cube map, whose pixel rounding is not reproduced.

@@ -190,6 +190,10 @@ class SupervisorHub:
         body = poses.solid_body(sim, node)
         if body is None:
             return []
+        if descendants and self._below_a_solid(node):
+            # Webots (WbSolid::extractContactPoints) lists descendants' points only for a top Solid: a point
+            # counts when one of its solids' topSolid() is this node, so a Solid inside another lists none.
+            return []
         owners = {sim.model.body(name).id: n for n in self.tree.by_id.values()
                   if (name := (sim.table.solids.get(id(n)) or ("",))[0])}
         points = []
@@ -202,6 +206,15 @@ class SupervisorHub:
                     points.append(([float(v) for v in sim.from_model @ contact.pos], self.tree.node_id(owner)))
                     break
         return points
+
+    def _below_a_solid(self, node: Node) -> bool:
+        """Whether a Solid holds `node` somewhere above it (it is not a top Solid)."""
+        parent = self.tree.parent(node)
+        while parent is not None:
+            if parent.is_a("Solid"):
+                return True
+            parent = self.tree.parent(parent)
+        return False
 
     def _field_get(self, ref: FieldRef, index: int) -> Any:
         if ref.name in _POSE_FIELDS and not ref.type.startswith("MF"):
