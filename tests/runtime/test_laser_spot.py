@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from wbtc.runtime.sensors import _laser_spot
+from wbtc.runtime.distance_rays import laser_spot as _laser_spot
 
 
 def test_spot_sits_half_a_millimetre_before_the_surface_facing_the_sensor() -> None:

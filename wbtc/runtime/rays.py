@@ -20,6 +20,8 @@ import numpy as np
 
 from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP
 
+_mj_ray = mujoco.mj_ray  # bound once: sensors call it thousands of times a second
+
 # (azimuth α, fraction t of the half aperture) for 1..10 rays, as Webots lays them out.
 _POLAR: dict[int, list[tuple[float, float]]] = {
     1: [(0.0, 0.0)],
@@ -67,7 +69,12 @@ def ray_pattern(n: int, aperture: float, gaussian_width: float) -> tuple[np.ndar
 
 
 class RayCaster:
-    """Casts rays in one model, skipping a set of bodies (the sensor's own robot)."""
+    """Casts rays in one model, skipping a set of bodies (the sensor's own robot).
+
+    Sensors cast a few rays every step, so the Python around each `mj_ray` is kept lean: the
+    model's geom → body table is read once, continuation points are written into reused buffers
+    from plain floats (the same IEEE operations as numpy's, so the same distances to the bit).
+    """
 
     def __init__(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         self.model, self.data = model, data
@@ -77,6 +84,9 @@ class RayCaster:
         self.collision[COLLISION_GROUP] = 1
         self._geom = np.zeros(1, dtype=np.int32)
         self.normal = np.zeros(3)  # the surface normal at the last hit
+        self._body: list[int] = model.geom_bodyid.tolist()  # a plain list: indexing numpy costs more
+        self._point = np.zeros(3)  # where a ray goes on past a hit it does not count
+        self._aside = np.zeros(3)  # the seam cast's origin
 
     def _past_seam(self, point: np.ndarray, direction: np.ndarray, groups: np.ndarray, exclude: int) -> float:
         """Cast again from 0.1 µm aside after a miss.
@@ -85,12 +95,14 @@ class RayCaster:
         right above a floor's grid line), where Webots' ray hits.
         """
         # direction × x̂ (or × ŷ when the ray runs along x), written out: np.cross costs ~70 µs a call.
-        dx, dy, dz = float(direction[0]), float(direction[1]), float(direction[2])
+        dx, dy, dz = direction.tolist()
         sx, sy, sz = (0.0, dz, -dy) if abs(dx) < 0.9 else (-dz, 0.0, dx)
         scale = 1e-7 / math.sqrt(sx * sx + sy * sy + sz * sz)
-        side = np.array((sx * scale, sy * scale, sz * scale))
-        model, data = self.model, self.data
-        return mujoco.mj_ray(model, data, point + side, direction, groups, 1, exclude, self._geom, self.normal)
+        px, py, pz = point.tolist()
+        # point + side, element by element as numpy would add them (the same IEEE sums).
+        aside = self._aside
+        aside[0], aside[1], aside[2] = px + sx * scale, py + sy * scale, pz + sz * scale
+        return _mj_ray(self.model, self.data, aside, direction, groups, 1, exclude, self._geom, self.normal)
 
     def cast(self, start: np.ndarray, direction: np.ndarray, max_range: float, visual: bool,
              skip_bodies: frozenset[int], exclude: int = -1, front_only: bool = False) -> tuple[float, int]:
@@ -110,20 +122,25 @@ class RayCaster:
         The hit surface's normal is left in `self.normal`.
         """
         groups = self.visual if visual else self.collision
+        model, data, found, normal, body = self.model, self.data, self._geom, self.normal, self._body
         travelled, point = 0.0, start
-        geom_body = self.model.geom_bodyid
         for _ in range(8):
-            dist = mujoco.mj_ray(self.model, self.data, point, direction, groups, 1, exclude, self._geom, self.normal)
+            dist = _mj_ray(model, data, point, direction, groups, 1, exclude, found, normal)
             if dist < 0:
                 dist = self._past_seam(point, direction, groups, exclude)
             if dist < 0 or travelled + dist > max_range:
                 return math.inf, -1
-            geom = int(self._geom[0])
-            back = front_only and float(self.normal @ direction) > 0.0
-            if int(geom_body[geom]) not in skip_bodies and not back:
+            geom = int(found[0])
+            # ndarray.dot: the same BLAS dot product as `@`, with less overhead.
+            back = front_only and float(normal.dot(direction)) > 0.0
+            if body[geom] not in skip_bodies and not back:
                 return travelled + dist, geom
-            # Another part of the robot (a wheel), or a surface seen from behind: continue just past it.
+            # Another part of the robot (a wheel), or a surface seen from behind: continue just past it
+            # (point + direction · step, element by element as numpy would).
             step = dist + 1e-6
             travelled += step
-            point = point + direction * step
+            px, py, pz = point.tolist()
+            dx, dy, dz = direction.tolist()
+            point = self._point
+            point[0], point[1], point[2] = px + dx * step, py + dy * step, pz + dz * step
         return math.inf, -1

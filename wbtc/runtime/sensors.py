@@ -3,8 +3,8 @@
 Every sensor starts disabled; `enable(p)` makes it sample every p ms, the first value p ms later.
 Values are in the world's own frame (NUE worlds are read back through the table's rotation).
 
-- DistanceSensor: rays (see `rays`), lookup table with its noise column, resolution; infra-red
-  rays see the surface colour where they land (see `surface`).
+- DistanceSensor: rays (see `rays` and `distance_rays`), lookup table with its noise column,
+  resolution; infra-red rays see the surface colour where they land (see `surface`).
 - PositionSensor: the joint position (noise σ, resolution).
 - InertialUnit: the device's orientation quaternion (x, y, z, w) in the world's frame.
 - Accelerometer: specific force in the device frame (+9.81 up at rest); Gyro: angular velocity;
@@ -35,6 +35,7 @@ from wbtc.compile.context import KINEMATIC_MASS
 from wbtc.compile.frames import mat_to_quat
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.distance_rays import SiteViews, ray_distance
 from wbtc.runtime.geodesy import to_wgs84
 from wbtc.runtime.lookup import LookupTable, apply, quantize
 from wbtc.runtime.rays import ray_pattern
@@ -42,10 +43,6 @@ from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
-
-
-_SONAR_COS = math.cos(math.pi / 8)
-_NO_BODIES: frozenset[int] = frozenset()
 
 
 class Sensor:
@@ -106,54 +103,11 @@ class DistanceSensor(Sensor):
         self.aperture = float(f.get("aperture", 1.5708))
         #: A laser's red spot where it hits (centre, surface normal towards the sensor, radius), for cameras.
         self.spot: tuple[np.ndarray, np.ndarray, float] | None = None
+        self.views = SiteViews(self.site)
 
     def sample(self, sim: Simulation) -> float:
-        """Distance from the rays, then the lookup table."""
-        pos, mat = self.frame(sim)
-        infra_red, sonar = self.kind == "infra-red", self.kind == "sonar"
-        num = den = 0.0
-        nearest = math.inf
-        for direction, weight in self.rays:
-            world_dir = mat @ direction
-            if infra_red:  # infra-red sees its own robot too (Webots' docs), from the front only (see rays)
-                dist, geom = sim.rays.cast(pos, world_dir, self.range, True, _NO_BODIES, -1, front_only=True)
-            else:
-                dist, geom = sim.rays.cast(pos, world_dir, self.range, False, self.skip_bodies, self.body)
-            # A sonar echo returns only when the ray meets the surface within π/8 of its normal.
-            if sonar and geom >= 0 and abs(float(np.dot(sim.rays.normal, world_dir))) < _SONAR_COS:
-                dist = math.inf
-            hit = math.isfinite(dist)
-            if self.kind == "laser":
-                self.spot = _laser_spot(pos, world_dir, dist, sim.rays.normal, self.aperture) if hit else None
-            nearest = min(nearest, dist)
-            d = dist if hit else self.range
-            # Infra-red: dark surfaces reflect less and look farther (reflection 0.2 + 0.8 red), the red
-            # being the surface's colour where the ray lands (texture included).
-            reflect = 0.2 + 0.8 * sim.surface.red(sim.data, geom, pos + world_dir * dist) if (infra_red and hit) \
-                else 1.0
-            num += weight * d
-            den += weight * reflect
-        distance = (nearest if math.isfinite(nearest) else self.range) if self.kind in ("sonar", "laser") \
-            else num / den
-        return apply(self.table, distance, sim.noise_rng, self.resolution)
-
-
-def _laser_spot(pos: np.ndarray, direction: np.ndarray, dist: float, normal: np.ndarray,
-                aperture: float) -> tuple[np.ndarray, np.ndarray, float] | None:
-    """Webots' laser spot, or None when there is none.
-
-    A disc of radius `aperture` on the surface, drawn when the beam meets it within 80° (1.3963 rad)
-    of its normal, 0.5 mm towards the sensor (lineScale 0.1 / 200) so that it is not hidden in it.
-    """
-    if aperture <= 0:
-        return None
-    towards = -np.asarray(direction, dtype=float)
-    facing = np.array(normal, dtype=float)  # a copy: the ray caster reuses its normal buffer
-    if float(facing @ towards) < 0:  # the normal may point into the surface: turn it out
-        facing = -facing
-    if math.acos(min(1.0, float(facing @ towards) / max(float(np.linalg.norm(facing)), 1e-12))) >= 1.3963:
-        return None
-    return np.asarray(pos, dtype=float) - towards * dist + towards * 0.0005, facing, aperture
+        """Distance from the rays (see `distance_rays`), then the lookup table."""
+        return apply(self.table, ray_distance(self, sim), sim.noise_rng, self.resolution)
 
 
 class PositionSensor(Sensor):
