@@ -74,9 +74,9 @@ COVERAGE = """\
 ## Corpus coverage
 
 `tests/proto/test_corpus_expand.py` expands every world of the shared corpus. Of the 3,284 PROTO
-instances written in those worlds, 11 (0.3 %) stay unresolved; `tests/proto/unresolved.txt` lists each
-missing PROTO with the reason (two project PROTOs their projects did not ship, and Webots robots and
-objects not written yet: Pioneer2, Irb4600-40, benchmark robots, valves). The RoboCup Junior rescue-maze
+instances written in those worlds, 6 (0.2 %) stay unresolved; `tests/proto/unresolved.txt` lists each
+missing PROTO with the reason (three project PROTOs their projects did not ship, and Webots robots not
+written yet: Irb4600-40 and three benchmark robots). The RoboCup Junior rescue-maze
 PROTOs of the Erebus simulator (`worldTile`, `halfTile`, `Victim`, `HazardMap`: 329 instances in the
 corpus, whose project did not ship them) are
 written here from Erebus' published tile layout.
