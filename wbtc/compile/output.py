@@ -1,6 +1,7 @@
 """Writing a compiled world as MJCF: the XML from `MjSpec.to_xml()` and its textures beside it.
 
-Textures live in the spec's in-memory assets while compiling; on disk they go to a folder named
+Textures live in the spec's in-memory assets while compiling (a Display's texture, made from pixels,
+becomes a PNG asset when written); on disk they go to a folder named
 after the output file (`robot.xml` → `robot_assets/`), which the XML names as its texture
 directory. Everything is written to temporary names first and renamed at the end, so an output
 is there whole or not at all.
@@ -8,12 +9,14 @@ is there whole or not at all.
 
 from __future__ import annotations
 
+import io
 import os
 import shutil
 import tempfile
 from pathlib import Path
 
 import mujoco
+import numpy as np
 
 from wbtc.errors import CompileError
 
@@ -27,6 +30,7 @@ def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
     out = Path(out)
     if not out.parent.is_dir():
         raise CompileError(f"the output folder {out.parent} does not exist")
+    _buffer_textures_to_files(spec)
     assets = dict(spec.assets)
     asset_dir = out.with_name(out.stem + "_assets")
     if assets:
@@ -55,3 +59,21 @@ def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
     except OSError as exc:
         raise CompileError(f"cannot write {out}: {exc.strerror or exc}") from None
     return written
+
+
+def _buffer_textures_to_files(spec: mujoco.MjSpec) -> None:
+    """Give textures made from pixels in memory (a Display's) a PNG asset: MJCF cannot hold pixel data."""
+    for texture in spec.textures:
+        data = bytes(texture.data)
+        if not data or texture.file:
+            continue
+        from PIL import Image  # only here: Pillow costs start-up time, and only a written file needs it
+
+        shape = (texture.height, texture.width, texture.nchannel)
+        image = Image.fromarray(np.frombuffer(data, dtype=np.uint8).reshape(shape), "RGBA" if shape[2] == 4 else "RGB")
+        buffer = io.BytesIO()
+        image.save(buffer, format="PNG")
+        name = f"{texture.name}.png"
+        spec.assets[name] = buffer.getvalue()
+        texture.data = b""
+        texture.file = name

@@ -1,0 +1,41 @@
+"""Writing MJCF: a Display's texture (pixels made in memory) goes out as a PNG asset that plain MuJoCo loads."""
+
+from pathlib import Path
+
+import mujoco
+import numpy as np
+from PIL import Image
+
+from wbtc.compile.output import write_mjcf
+from wbtc.pipeline import compile_world
+
+WORLD = """#VRML_SIM R2025a utf8
+WorldInfo { }
+Robot {
+  children [
+    Display {
+      width 4
+      height 2
+      children [
+        Shape {
+          appearance Appearance { texture ImageTexture { } }
+          geometry Box { size 0.1 0.1 0.01 }
+        }
+      ]
+    }
+  ]
+}
+"""
+
+
+def test_a_display_texture_is_written_as_a_png_that_mujoco_loads(tmp_path: Path) -> None:
+    world = tmp_path / "display.wbt"
+    world.write_text(WORLD, encoding="utf-8")
+    result, _ = compile_world(world)
+    written = write_mjcf(result.spec, tmp_path / "display.xml")
+    pngs = [p for p in written if p.suffix == ".png"]
+    assert len(pngs) == 1 and pngs[0].parent.name == "display_assets"
+    # The display's initial pixels: its ImageTexture has no image, so white, at the display's size.
+    assert np.array_equal(np.asarray(Image.open(pngs[0])), np.full((2, 4, 3), 255, dtype=np.uint8))
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "display.xml"))
+    assert (model.ntex, int(model.tex_width[0]), int(model.tex_height[0])) == (1, 4, 2)
