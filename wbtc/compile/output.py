@@ -31,6 +31,7 @@ def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
     if not out.parent.is_dir():
         raise CompileError(f"the output folder {out.parent} does not exist")
     _buffer_textures_to_files(spec)
+    _inertias_clear_of_the_triangle_edge(spec)
     assets = dict(spec.assets)
     asset_dir = out.with_name(out.stem + "_assets")
     if assets:
@@ -77,3 +78,30 @@ def _buffer_textures_to_files(spec: mujoco.MjSpec) -> None:
         spec.assets[name] = buffer.getvalue()
         texture.data = b""
         texture.file = name
+
+
+def _inertias_clear_of_the_triangle_edge(spec: mujoco.MjSpec) -> None:
+    """Keep explicit inertias valid once written: the XML rounds them to 6 significant digits.
+
+    A body whose principal moments sit on MuJoCo's triangle inequality (A + B = C: a thin plate) can
+    fall a hair short when read back, and plain MuJoCo then refuses the file. Adding 1e-5 of the
+    largest moment to each (ε·identity shifts every principal moment by ε) keeps it clear of the edge
+    and changes the body's inertia by 0.001 %.
+    """
+    for body in spec.bodies:
+        if not body.explicitinertial or body.mass <= 0:
+            continue
+        full = np.asarray(body.fullinertia, dtype=float)
+        if not np.isnan(full[0]):
+            tensor = np.array([[full[0], full[3], full[4]], [full[3], full[1], full[5]], [full[4], full[5], full[2]]])
+            moments = np.sort(np.linalg.eigvalsh(tensor))
+        else:
+            moments = np.sort(np.asarray(body.inertia, dtype=float))
+        if moments[2] <= 0 or moments[0] + moments[1] - moments[2] > 1e-5 * moments[2]:
+            continue
+        lift = 1e-5 * moments[2]
+        if not np.isnan(full[0]):
+            full[:3] += lift
+            body.fullinertia = full
+        else:
+            body.inertia = np.asarray(body.inertia, dtype=float) + lift

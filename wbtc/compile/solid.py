@@ -321,6 +321,7 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
         # A static or merged Solid adds no mass; one that moves on a joint without Physics is moved
         # kinematically by Webots, and MuJoCo needs some inertia for a jointed body.
         body.mass, body.inertia = 0.0, [0.0] * 3
+        body.ipos = [0.0, 0.0, 0.0]  # MJCF writes an explicit inertial only with a position set
         if on_joint:
             make_kinematic(body)  # some mass, no gravity (Webots gives it no ODE body)
         return
