@@ -4,13 +4,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import mujoco
 import numpy as np
 import pytest
+from test_buildings import settle
 
-from wbtc.pipeline import compile_world
 from wbtc.proto.expand import expand_scene
-from wbtc.runtime.simulation import Simulation
 from wbtc.scene import Node, build_scene
 from wbtc.vrml import parse_text
 
@@ -49,18 +47,7 @@ def extent(bounds: Node) -> np.ndarray:
 def drop(tmp_path: Path, building: str, balls: dict[str, tuple[float, float, float]],
          steps: int = 80) -> dict[str, np.ndarray]:
     """Drop balls of radius 0.1 on the building; their positions after `steps` steps of 8 ms."""
-    text = HEADER + building + "\n"
-    for name, (x, y, z) in balls.items():
-        text += (f"DEF {name} Solid {{\n  translation {x} {y} {z}\n  children [ Shape {{ geometry Sphere "
-                 "{ radius 0.1 } } ]\n  boundingObject Sphere { radius 0.1 }\n  physics Physics { }\n}\n")
-    world = tmp_path / "drop.wbt"
-    world.write_text(text)
-    result, _ = compile_world(world)
-    sim = Simulation(result, noise=False)
-    for _ in range(steps):
-        sim.step()
-    mujoco.mj_forward(result.model, sim.data)
-    return {name: sim.data.xpos[result.model.body(result.table.bodies[name]).id].copy() for name in balls}
+    return settle(tmp_path, HEADER + building + "\n", balls, steps)
 
 
 @pytest.mark.parametrize(("proto", "name", "model"), [

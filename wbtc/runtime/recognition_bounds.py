@@ -124,13 +124,20 @@ def point_bounds(points: np.ndarray, frustum: Frustum) -> tuple[np.ndarray, np.n
         kept.append(p)
     if not kept:
         return None
-    if inside_count == 0:
-        across = outside[RIGHT] and outside[LEFT] and correct[BOTTOM] and correct[TOP]
-        up_down = outside[BOTTOM] and outside[TOP] and correct[RIGHT] and correct[LEFT]
-        if not (across or up_down):
-            return None
+    if inside_count == 0 and not _crosses_view(outside, correct):
+        return None
     every = np.array(kept + behind)
     return every.min(axis=0), every.max(axis=0)
+
+
+def _crosses_view(outside: np.ndarray | list[bool], correct: np.ndarray | list[bool]) -> bool:
+    """With no point inside: whether the object still spans the view, from side to side or top to bottom.
+
+    `outside[j]` says a point lay beyond frustum plane j, `correct[j]` that one lay on its inner side.
+    """
+    across = outside[RIGHT] and outside[LEFT] and correct[BOTTOM] and correct[TOP]
+    up_down = outside[BOTTOM] and outside[TOP] and correct[RIGHT] and correct[LEFT]
+    return bool(across or up_down)
 
 
 def round_bounds(centre: np.ndarray, size: np.ndarray, frustum: Frustum) -> tuple[np.ndarray, np.ndarray] | None:
@@ -221,11 +228,7 @@ def clip_to_view(points: np.ndarray, tan_x: float, tan_y: float) -> tuple[np.nda
         ahead.append(p)
     if not ahead:
         return None
-    if inside_count == 0:
-        right, bottom, left, top = range(4)
-        across = outside[right] and outside[left] and correct[bottom] and correct[top]
-        up_down = outside[bottom] and outside[top] and correct[right] and correct[left]
-        if not (across or up_down):
-            return None
+    if inside_count == 0 and not _crosses_view(outside, correct):
+        return None
     kept = np.array(ahead + behind)
     return kept.min(axis=0), kept.max(axis=0)
