@@ -471,3 +471,25 @@ def test_simulation_reset_keeps_written_fields_and_removals_and_drops_imports(hu
     assert hub.call(referee, "getFromDef", ("BALL", -1)) is None
     assert hub.call(referee, "field.getCount", (children["id"],)) == count - 1
     assert next(r for r in sim.robots if r.entry.name == "driver").entry.controller_args[0] == "1.0"
+
+
+def test_reset_button_resets_like_the_supervisor_and_restarts_every_controller(hub):
+    # The window's reset key is Webots' Reset button: the same reset (fields a supervisor wrote are
+    # kept, Solids go back), and every controller starts over.
+    hub, referee = hub
+    sim = hub.sim
+    _, arm = _field(hub, referee, "ARM", "translation")
+    _, box = _field(hub, referee, "BOX", "translation")
+    hub.queue(referee, "field.set", (arm["id"], -1, [0.0, 0.0, 0.3]))
+    hub.queue(referee, "field.set", (box["id"], -1, [2.0, 2.0, 0.05]))
+    hub.flush()
+    hub.take_changes()
+    for _ in range(5):
+        sim.step()
+    hub.queue(None, "resetButton", ())
+    hub.flush()
+    changes = hub.take_changes()
+    assert changes.reset and sim.time_ms == 0.0
+    assert sorted(r.entry.name for r in changes.restart) == ["driver", "referee"]
+    assert hub.call(referee, "field.get", (box["id"], -1)) == pytest.approx([1, 1, 0.05])
+    assert hub.call(referee, "field.get", (arm["id"], -1)) == pytest.approx([0, 0, 0.3])

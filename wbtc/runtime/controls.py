@@ -6,7 +6,7 @@
 | Ctrl+1 | one basic time step (and stay paused) |
 | Ctrl+2 | run in real time |
 | Ctrl+3 | run fast (no pacing) |
-| Ctrl+Shift+T, Ctrl+Shift+R | reset: the world as loaded, every controller started over |
+| Ctrl+Shift+T, Ctrl+Shift+R | reset (Webots' Reset button): time 0, poses back, every controller anew |
 | Ctrl+F | follow: the free view, then each robot in turn |
 | F1 | show / hide the panel of keys |
 

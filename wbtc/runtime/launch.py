@@ -83,7 +83,7 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     if not headless and _has_display():
         if hub is None:  # the window's reset key needs what a supervisor's simulationReset uses
             hub = SupervisorHub(sim, prepared.scene, world, prepared.options)
-        window = open_window(sim, world, lambda: hub.queue(None, "worldReload", ()))
+        window = open_window(sim, world, lambda: hub.queue(None, "resetButton", ()))
     hooks = [window.sync] if window is not None else []
     hooks += [recorder] if recorder is not None else []
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None

@@ -298,6 +298,9 @@ class SupervisorHub:
         elif op == "simulationReset":  # every controller goes on (Webots' Reset/Reload matrix)
             outcome.reset = True
             outcome.keep_controllers = True
+        elif op == "resetButton":  # the window's reset key, Webots' Reset button: the reset, controllers anew
+            outcome.reset = outcome.keep_controllers = True
+            outcome.restart += list(sim.robots)
         elif op == "worldReload":  # the world file anew, and every controller started again (this one too)
             outcome.reset = outcome.reload = True
             outcome.restart += list(sim.robots)
