@@ -142,3 +142,15 @@ def test_the_viewpoint_follows_the_robot_as_webots_follow_types_do(sim, tmp_path
         before, after = start_robot - start_cam, sim.data.xpos[robot] - position
         # The robot is seen in the same direction from the camera as at the start.
         assert np.allclose(rotation.T @ after / np.linalg.norm(after), start_mat.T @ before / np.linalg.norm(before))
+
+
+def test_frames_follow_the_viewpoint_exposure(sim, tmp_path):
+    # Webots' 3D view tone-maps at the Viewpoint's exposure: a darker exposure darkens every lit pixel.
+    recorder = Recorder(sim, tmp_path / "exposure.gif")
+    normal = recorder.frame(sim).astype(int)
+    sim.table.viewpoint["exposure"] = 0.25
+    dark = recorder.frame(sim).astype(int)
+    recorder.abort()
+    lit = normal.sum(axis=2) > 30
+    assert lit.mean() > 0.5
+    assert (dark.sum(axis=2)[lit] < normal.sum(axis=2)[lit]).mean() > 0.9

@@ -14,7 +14,9 @@ GIF (Pillow) at 320×240 and 10 fps. A run of T seconds gives floor(T · fps) + 
 - The file is written under a temporary name beside the target and renamed when the run ends; a
   failed run leaves nothing.
 
-Not honoured yet: Viewpoint `followSmoothness` (following is rigid), `near`, `exposure`, lens flare,
+Frames go through Webots' tone curve at the Viewpoint's `exposure` (see `tone`), as its 3D view does.
+
+Not honoured yet: Viewpoint `followSmoothness` (following is rigid), `near`, lens flare,
 ambient occlusion and bloom; shadows; label fonts (one sans-serif font for all).
 """
 
@@ -83,7 +85,8 @@ class Recorder:
         """The viewpoint's image now, labels drawn, as RGB rows from the top."""
         camera, pose = self.follow.view(sim)
         renderer = sim.renderer(self.width, self.height, antialias=True)
-        rgb = np.ascontiguousarray(renderer.draw(sim.data, camera, pose=pose)[::-1])
+        exposure = float((sim.table.viewpoint or {}).get("exposure", 1.0))
+        rgb = np.ascontiguousarray(renderer.draw(sim.data, camera, pose=pose, exposure=exposure)[::-1])
         labels = getattr(sim, "labels", None)
         return self.labels.draw(rgb, labels) if labels else rgb
 
