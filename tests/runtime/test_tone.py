@@ -93,3 +93,31 @@ def test_image_textures_are_linearised_before_lighting(tmp_path):
     pixel = _centre(tmp_path, "DirectionalLight { direction 0 0 -1 ambientIntensity 0 }\n"
                     + _box('Appearance { material Material { } texture ImageTexture { url [ "grey.png" ] } }'))
     assert pixel == pytest.approx((121, 121, 121), abs=2)
+
+
+def test_motion_blur_mixes_each_image_into_the_last_before_the_tone_curve(tmp_path):
+    # Webots' camera_color_motion_blur: with motionBlur 256 and a 32 ms period, f = 0.005^(32/256) and a
+    # pixel a red box leaves fades 224, 188, 150, 115, 87 (its trail in Webots' test) over a blue floor.
+    world = tmp_path / "blur.wbt"
+    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo { }\nBackground { skyColor [ 1 1 1 ] }\n"
+                     + "DirectionalLight { ambientIntensity 1 direction 0 -1 -1 }\n" * 2
+                     + _box("PBRAppearance { baseColor 1 0 0 roughness 1 metalness 0 }")
+                     + "\nPose { translation 0 0 -1 children [ Shape { appearance PBRAppearance { baseColor 0 0 1 }"
+                       " geometry Box { size 5 5 0.01 } } ] }\n"
+                     + CAMERA.format(camera="motionBlur 256"), encoding="utf-8")
+    result, _ = compile_world(world)
+    sim = Simulation(result)
+    mujoco.mj_forward(sim.model, sim.data)
+    camera = next(s for s in sim.robots[0].sensors.values() if isinstance(s, Camera))
+    camera.image_period = 32
+    red = next(g for g in range(sim.model.ngeom) if tuple(sim.model.geom_rgba[g, :3]) == (1.0, 0.0, 0.0))
+    reds = []
+    for step in range(5):
+        if step == 1:  # the box goes: only the blue floor is left to see
+            sim.model.geom_rgba[red, 3] = 0.0
+        camera.sample(sim)
+        reds.append(int(camera.pixels[4, 4, 2]))
+    sim.close()
+    # Within one: MuJoCo's image holds the box's radiance in 8-bit steps (177 of 255 for Webots' 177.6).
+    assert reds == pytest.approx([224, 188, 150, 115, 87], abs=1)
+    assert reds[0] == 224 and reds[1] == 188

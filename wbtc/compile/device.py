@@ -8,7 +8,7 @@ maxTorque/maxForce — the runtime turns Webots' motor model (position P control
 acceleration limits) into that actuator's velocity target every basic time step.
 
 Not honoured yet: Motor `consumptionFactor`, `sound`, `muscles`, `multiplier` (coupled motors);
-Camera `projection` other than planar, `lens`, `focus`, `lensFlare`, `motionBlur`, `bloomThreshold`;
+Camera `projection` other than planar, `lens`, `focus`, `lensFlare`, `bloomThreshold`;
 the devices of a DifferentialWheels robot.
 """
 
@@ -40,7 +40,7 @@ CAMERA_DEVICES = frozenset({"Camera", "RangeFinder"})
 SITE_GROUP = 5
 #: Devices whose readings are vectors or orientations in their own axes.
 _AXIS_DEVICES = frozenset({"Accelerometer", "Gyro", "Compass", "InertialUnit"})
-_UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare", "motionBlur",
+_UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare",
                          "projection", "bloomThreshold"})
 #: The runtime casts a Lidar's `projection` itself; its `rotatingHead` solid does not turn.
 _LIDAR_UNHONOURED = (_UNHONOURED - {"projection"}) | {"rotatingHead"}

@@ -35,7 +35,7 @@ import numpy as np
 from wbtc.compile.device import led_material
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry, plain_fields
-from wbtc.runtime import segmentation
+from wbtc.runtime import segmentation, tone
 from wbtc.runtime.camera_projection import Optics
 from wbtc.runtime.recognition import Settings, Target, recognize, targets
 from wbtc.runtime.sensors import Sensor
@@ -123,6 +123,8 @@ class Camera(Sensor):
         self.fov = float(entry.fields.get("fieldOfView", 0.785398))
         self.noise = float(entry.fields.get("noise", 0.0))
         self.exposure = float(entry.fields.get("exposure", 1.0))
+        self.motion_blur = float(entry.fields.get("motionBlur", 0.0))
+        self._blurred: np.ndarray | None = None  # the last image's linear levels, with motion blur
         # Before R2023a a `spherical TRUE` Camera was what `projection "cylindrical"` is now.
         projection = str(entry.fields.get("projection", "planar"))
         self.projection = "cylindrical" if entry.fields.get("spherical") and projection == "planar" else projection
@@ -224,8 +226,11 @@ class Camera(Sensor):
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
-        rgb = sim.renderer(self.width, self.height).draw(sim.data, self.camera, self.near, spots=sim.laser_spots(),
-                                                         exposure=self.exposure)
+        renderer = sim.renderer(self.width, self.height)
+        if self.motion_blur > 0 and self.image_period > 0:
+            rgb = self._blur(renderer.draw(sim.data, self.camera, self.near, spots=sim.laser_spots(), exposure=None))
+        else:
+            rgb = renderer.draw(sim.data, self.camera, self.near, spots=sim.laser_spots(), exposure=self.exposure)
         pixels = self._image()
         if self.noise > 0 and sim.noise_rng is not None:
             # Webots: σ = noise × 255 on every channel, independently per pixel and per sample.
@@ -236,6 +241,20 @@ class Camera(Sensor):
         if self.block is not None:
             return {"shm": self.block.name, "data": None, "width": self.width, "height": self.height}
         return {"shm": None, "data": pixels.tobytes(), "width": self.width, "height": self.height}
+
+    def _blur(self, levels: np.ndarray) -> np.ndarray:
+        """Webots' motion blur, then the tone curve: each image mixes into the last, in linear light.
+
+        Webots mixes the new HDR image with the last result by f = 0.005^(period / motionBlur) (a pixel
+        reaches 99.5 % of a new value in `motionBlur` ms) before its HDR resolve; the first image is as
+        drawn.
+        """
+        factor = 0.005 ** (self.image_period / self.motion_blur)
+        if self._blurred is None or self._blurred.shape != levels.shape:
+            self._blurred = levels.astype(np.float32)
+        else:
+            self._blurred = levels * np.float32(1.0 - factor) + self._blurred * np.float32(factor)
+        return tone.map_levels(self._blurred, self.exposure)
 
     def _image(self) -> np.ndarray:
         """The BGRA image buffer for the current size (alpha 255), in shared memory when possible."""

@@ -186,7 +186,8 @@ class Offscreen:
 
     def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
              pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None,
-             spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None, exposure: float = 1.0) -> np.ndarray:
+             spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None,
+             exposure: float | None = 1.0) -> np.ndarray:
         """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
 
         Args:
@@ -196,7 +197,8 @@ class Offscreen:
             far: far clipping distance in metres (None: MuJoCo's).
             pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
             spots: laser spots to draw (centre, surface normal, radius), as Webots' cameras see them.
-            exposure: the camera's exposure, for the tone curve.
+            exposure: the camera's exposure, for the tone curve; None returns the drawn linear levels
+                (radiance × 255 / `tone.HEADROOM`), for effects Webots applies before its tone mapping.
 
         Returns:
             The RGB pixels, rows from the **bottom**; overwritten by the next `draw`.
@@ -251,7 +253,7 @@ class Offscreen:
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         mujoco.mjr_render(self.rect, self.scene, self.context)
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
-        return tone.apply(self.pixels, exposure)
+        return self.pixels if exposure is None else tone.apply(self.pixels, exposure)
 
     def _lighting(self) -> list[np.ndarray]:
         """The model arrays a camera draws with other values than the viewer (views, written in place)."""

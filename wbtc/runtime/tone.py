@@ -76,6 +76,19 @@ def linear(colour: np.ndarray) -> np.ndarray:
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
+def map_levels(levels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
+    """Map fractional drawn levels (a blend of images) through the curve, as 8-bit values.
+
+    The same curve as `curve`, evaluated at each level itself rather than at a whole level, so that a
+    mix of images is not rounded to the 8-bit grid before the curve (Webots mixes in floats); a
+    saturated level (255 and above) reads 255.
+    """
+    radiance = np.asarray(levels, dtype=np.float64) / 255.0 * HEADROOM * max(float(exposure), 0.0)
+    mapped = np.rint(255.0 * (1.0 - np.exp(-radiance)) ** (1.0 / GAMMA))
+    mapped[np.asarray(levels) >= 255] = 255.0
+    return mapped.astype(np.uint8)
+
+
 def apply(pixels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
     """Map drawn 8-bit pixels through the curve in place; returns `pixels`."""
     np.take(curve(exposure), pixels, out=pixels)
