@@ -43,7 +43,9 @@ _AXIS_DEVICES = frozenset({"Accelerometer", "Gyro", "Compass", "InertialUnit"})
 _UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare",
                          "projection", "bloomThreshold"})
 #: The runtime casts a Lidar's `projection` itself; its `rotatingHead` solid does not turn.
-_LIDAR_UNHONOURED = (_UNHONOURED - {"projection"}) | {"rotatingHead"}
+_LIDAR_UNHONOURED = (_UNHONOURED - {"projection"}) | {"rotatingHead", "motionBlur"}
+#: Cameras blur their images (runtime.devices); range finders do not yet.
+_RANGE_FINDER_UNHONOURED = _UNHONOURED | {"motionBlur"}
 
 # Webots cameras (R2022a+) look along +x with +z up; MuJoCo cameras look along -z with +y up.
 # The columns are MuJoCo's camera axes written in the device frame: x_cam = -y, y_cam = +z, z_cam = -x.
@@ -85,7 +87,7 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     kind = node.base_type
     if kind not in SOLID_DEVICES:
         return None
-    ctx.unhonoured(node, _LIDAR_UNHONOURED if kind == "Lidar" else _UNHONOURED)
+    ctx.unhonoured(node, {"Lidar": _LIDAR_UNHONOURED, "RangeFinder": _RANGE_FINDER_UNHONOURED}.get(kind, _UNHONOURED))
     name = str(node.get("name"))
     if robot.device(name) is not None:
         ctx.warn(f"robot {robot.name!r} already has a device named {name!r}; this one is not reachable", node.span)
