@@ -8,7 +8,7 @@ maxTorque/maxForce — the runtime turns Webots' motor model (position P control
 acceleration limits) into that actuator's velocity target every basic time step.
 
 Not honoured yet: Motor `consumptionFactor`, `sound`, `muscles`, `multiplier` (coupled motors);
-Camera `projection` other than planar, `lens`, `focus`, `lensFlare`, `bloomThreshold`;
+Camera `projection` other than planar, `lens`, `lensFlare`, `bloomThreshold`;
 the devices of a DifferentialWheels robot.
 """
 
@@ -40,12 +40,12 @@ CAMERA_DEVICES = frozenset({"Camera", "RangeFinder"})
 SITE_GROUP = 5
 #: Devices whose readings are vectors or orientations in their own axes.
 _AXIS_DEVICES = frozenset({"Accelerometer", "Gyro", "Compass", "InertialUnit"})
-_UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "focus", "lensFlare",
+_UNHONOURED = frozenset({"consumptionFactor", "multiplier", "muscles", "lens", "lensFlare",
                          "projection", "bloomThreshold"})
 #: The runtime casts a Lidar's `projection` itself; its `rotatingHead` solid does not turn.
 _LIDAR_UNHONOURED = (_UNHONOURED - {"projection"}) | {"rotatingHead", "motionBlur"}
-#: Cameras blur their images (runtime.devices); range finders do not yet.
-_RANGE_FINDER_UNHONOURED = _UNHONOURED | {"motionBlur"}
+#: Cameras blur and focus their images (runtime.camera_effects); range finders do not yet.
+_RANGE_FINDER_UNHONOURED = _UNHONOURED | {"motionBlur", "focus"}
 
 # Webots cameras (R2022a+) look along +x with +z up; MuJoCo cameras look along -z with +y up.
 # The columns are MuJoCo's camera axes written in the device frame: x_cam = -y, y_cam = +z, z_cam = -x.
@@ -112,9 +112,11 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     if kind in CAMERA_DEVICES:
         entry.camera = _camera(node, body, ctx, at, own if frame is not None else body.name)
     if kind == "Camera":
-        # The controller reads the Recognition node's fields (plain_fields leaves node fields out).
-        recognition = node.get("recognition")
-        entry.fields["recognition"] = plain_fields(recognition) if isinstance(recognition, Node) else None
+        # The controller reads the Recognition, Zoom and Focus nodes' fields (plain_fields leaves node
+        # fields out).
+        for name in ("recognition", "zoom", "focus"):
+            child = node.get(name)
+            entry.fields[name] = plain_fields(child) if isinstance(child, Node) else None
     if kind == "Display":
         display_texture.register(node, entry, ctx)
     if kind in ("VacuumGripper", "Connector"):

@@ -18,7 +18,8 @@
   queue them until their next sample.
 
 Not honoured yet: Emitter `baudRate`, `byteSize`, `bufferSize`; Receiver noise
-fields; Camera `noiseMaskUrl` (see `recognition` and `segmentation` for the rest);
+fields; Camera `noiseMaskUrl`, `lens`, `lensFlare`, `bloomThreshold` (see `camera_effects` for Focus and
+motionBlur, `recognition` and `segmentation` for the rest);
 serial emitters (treated as radio).
 """
 
@@ -35,7 +36,7 @@ import numpy as np
 from wbtc.compile.device import led_material
 from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import DeviceEntry, plain_fields
-from wbtc.runtime import segmentation, tone
+from wbtc.runtime import camera_effects, segmentation, tone
 from wbtc.runtime.camera_projection import Optics
 from wbtc.runtime.recognition import Settings, Target, recognize, targets
 from wbtc.runtime.sensors import Sensor
@@ -125,6 +126,9 @@ class Camera(Sensor):
         self.exposure = float(entry.fields.get("exposure", 1.0))
         self.motion_blur = float(entry.fields.get("motionBlur", 0.0))
         self._blurred: np.ndarray | None = None  # the last image's linear levels, with motion blur
+        focus = entry.node.get("focus") if entry.node is not None else None
+        self.focus = (float(focus.get("focalDistance")), float(focus.get("focalLength"))) \
+            if isinstance(focus, Node) else (0.0, 0.0)
         # Before R2023a a `spherical TRUE` Camera was what `projection "cylindrical"` is now.
         projection = str(entry.fields.get("projection", "planar"))
         self.projection = "cylindrical" if entry.fields.get("spherical") and projection == "planar" else projection
@@ -173,6 +177,8 @@ class Camera(Sensor):
             self.segmentation_enabled = op == "enableSegmentation"
         elif op == "setExposure":
             self.exposure = float(args[0])
+        elif op == "setFocalDistance":
+            self.focus = (float(args[0]), self.focus[1])
         elif op == "setFov":
             self.fov = float(args[0])
             fovy = 2 * math.atan(math.tan(self.fov / 2) * self.height / max(self.width, 1))
@@ -227,8 +233,17 @@ class Camera(Sensor):
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
         renderer = sim.renderer(self.width, self.height)
-        if self.motion_blur > 0 and self.image_period > 0:
-            rgb = self._blur(renderer.draw(sim.data, self.camera, self.near, spots=sim.laser_spots(), exposure=None))
+        blurs = self.motion_blur > 0 and self.image_period > 0
+        focuses = self.focus[0] > 0 and self.focus[1] > 0
+        if blurs or focuses:  # Webots' effects work in linear light, before its tone curve
+            levels = renderer.draw(sim.data, self.camera, self.near, spots=sim.laser_spots(), exposure=None)
+            levels = camera_effects.unclip(levels)
+            if focuses:
+                levels = camera_effects.depth_of_field(levels, renderer.last_depth(), *self.focus)
+            if blurs:
+                levels = self._blurred = camera_effects.motion_blur(levels, self._blurred, self.image_period,
+                                                                    self.motion_blur)
+            rgb = tone.map_levels(levels, self.exposure)
         else:
             rgb = renderer.draw(sim.data, self.camera, self.near, spots=sim.laser_spots(), exposure=self.exposure)
         pixels = self._image()
@@ -241,20 +256,6 @@ class Camera(Sensor):
         if self.block is not None:
             return {"shm": self.block.name, "data": None, "width": self.width, "height": self.height}
         return {"shm": None, "data": pixels.tobytes(), "width": self.width, "height": self.height}
-
-    def _blur(self, levels: np.ndarray) -> np.ndarray:
-        """Webots' motion blur, then the tone curve: each image mixes into the last, in linear light.
-
-        Webots mixes the new HDR image with the last result by f = 0.005^(period / motionBlur) (a pixel
-        reaches 99.5 % of a new value in `motionBlur` ms) before its HDR resolve; the first image is as
-        drawn.
-        """
-        factor = 0.005 ** (self.image_period / self.motion_blur)
-        if self._blurred is None or self._blurred.shape != levels.shape:
-            self._blurred = levels.astype(np.float32)
-        else:
-            self._blurred = levels * np.float32(1.0 - factor) + self._blurred * np.float32(factor)
-        return tone.map_levels(self._blurred, self.exposure)
 
     def _image(self) -> np.ndarray:
         """The BGRA image buffer for the current size (alpha 255), in shared memory when possible."""

@@ -175,6 +175,11 @@ class Offscreen:
         finally:  # the renderer and the model are shared with colour cameras of the same size
             flags[mujoco.mjtRndFlag.mjRND_SKYBOX] = sky
             model.geom_rgba[:, 3], model.mat_rgba[:, 3] = geom_alpha, mat_alpha
+        return self.last_depth()
+
+    def last_depth(self) -> np.ndarray:
+        """The depth of the last image drawn: metres to the image plane (inf: nothing drawn), rows from the bottom."""
+        near, far = self.scene.camera[0].frustum_near, self.scene.camera[0].frustum_far
         raw = np.empty((self.height, self.width), dtype=np.float32)
         mujoco.mjr_readPixels(None, raw, self.rect, self.context)
         # MuJoCo reads depth 0 at the near plane and 1 at the far one (its default mjDEPTH_ZERONEAR);
