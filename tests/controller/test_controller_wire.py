@@ -82,6 +82,33 @@ def test_numpy_values_and_builtin_subclasses_travel_as_plain_builtins() -> None:
     assert wire.decode(wire.encode((b"\x93", "\x93"))[4:]) == (b"\x93", "\x93")
 
 
+def test_a_reused_encoder_writes_the_bytes_of_a_fresh_pickler() -> None:
+    shared, items = "ps0", [1.5, 2.5]  # repeated objects: the pickler's memo refers back to them
+    messages = [{"status": 0, "time": 0.064, "values": {3: 70.25, 4: shared, 5: shared}},
+                ("step", 64, [(5, "setVelocity", 5.0), (6, "setVelocity", -5.0)]),
+                {"a": items, "b": [items, items], "c": shared},
+                {"image": bytes(range(256)) * 5000},  # larger than the buffer an encoder keeps
+                ("call", -1, "getFromDef", ("BOX", -1))]
+
+    def fresh(obj: object) -> bytes:
+        payload = pickle.dumps(obj, protocol=4)
+        return struct.pack("<I", len(payload)) + payload
+
+    for _ in range(2):
+        for message in messages:
+            assert wire.encode(message) == fresh(message)
+        with pytest.raises(TypeError):  # a refused message leaves nothing behind for the next one
+            wire.encode({"x": shared, "y": complex(1, 2)})
+    frames: list[bytes] = []
+    threads = [threading.Thread(target=lambda: frames.extend(wire.encode(m) for m in messages * 50))
+               for _ in range(2)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    assert sorted(frames) == sorted(fresh(m) for m in messages * 100)
+
+
 def test_values_that_cannot_be_made_plain_are_refused_by_the_sender() -> None:
     with pytest.raises(TypeError, match="not plain data"):
         wire.encode(("step", 32, [(0, "setVelocity", complex(1, 2))]))

@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import sys
+from typing import Any
 
 import mujoco
 
@@ -71,6 +72,8 @@ class Motor:
         self.metered = False  # a battery counts this motor's effort: keep its mean force per step too
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
+        # (MjData, MjModel, qpos, qvel, ctrl, dof_damping): views made once per MjData and MjModel.
+        self._views: tuple[Any, ...] = (None, None)
 
     def apply(self, op: str, args: tuple, now_ms: float = 0.0) -> None:
         """One command from the controller (`now_ms`: when it applies, for feedback sampling)."""
@@ -112,28 +115,32 @@ class Motor:
             self._written = (None, math.nan)
             data.ctrl[a] = self.torque
             return
-        wanted = self._velocity_command(ts, float(data.qpos[self.qpos_adr]))
-        self._limit_gain(data, wanted)
+        views = self._views
+        if views[0] is not data or views[1] is not model:  # every MjData/MjModel array read is a new view
+            views = self._views = (data, model, data.qpos, data.qvel, data.ctrl, model.dof_damping)
+        _, _, qpos, qvel, ctrl, damping = views
+        wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
+        velocity = float(qvel[self.dof_adr])
+        self._limit_gain(velocity, wanted)
         if self._written[0] is not model or self._written[1] != self.gain:
             model.actuator_gainprm[a, 0] = self.gain
             model.actuator_biasprm[a, 2] = -self.gain
             # The servo's damping, integrated implicitly through the mass matrix (see tune_servos).
             model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
             self._written = (model, self.gain)
-        data.ctrl[a] = wanted + self._damping_lead(model, data, wanted)
+        ctrl[a] = wanted + self._damping_lead(float(damping[self.dof_adr]), velocity, wanted)
 
-    def _damping_lead(self, model: mujoco.MjModel, data: mujoco.MjData, wanted: float) -> float:
+    def _damping_lead(self, damping: float, velocity: float, wanted: float) -> float:
         """How far past `wanted` to aim so that the joint's damping does not slow the servo down.
 
         Webots' ODE motor reaches its velocity against the joint's `dampingConstant` (and brakes) as long as
         the available torque allows; a servo alone would settle at gain / (gain + damping) of it (a Rosbot
         wheel, damping 5, at 4.05 of 5 rad/s). The lead adds the damping's torque at `wanted`, within what
-        the available torque leaves.
+        the available torque leaves (`damping`: the joint's; `velocity`: the joint's now).
         """
-        damping = float(model.dof_damping[self.dof_adr])
         if damping <= 0.0 or self.gain <= 1e-9:
             return 0.0
-        room = max(self.available - self.gain * abs(wanted - float(data.qvel[self.dof_adr])), 0.0)
+        room = max(self.available - self.gain * abs(wanted - velocity), 0.0)
         return min(max(damping * wanted, -room), room) / self.gain
 
     def _velocity_command(self, ts: float, position: float) -> float:
@@ -158,15 +165,16 @@ class Motor:
         self.command = wanted
         return wanted
 
-    def _limit_gain(self, data: mujoco.MjData, wanted: float) -> None:
+    def _limit_gain(self, velocity: float, wanted: float) -> None:
         """Keep the servo's effort within the available torque by lowering its gain.
 
         The servo's force is gain × (target − velocity) and only shrinks as the joint catches up, so
         capping the gain at available / |target − velocity| at the start of each basic step keeps
         the effort within the limit without clamping (which would break the implicit damping that
-        the joint's armature, gain × timestep, stands for: see compile.device.tune_servos).
+        the joint's armature, gain × timestep, stands for: see compile.device.tune_servos). `velocity`: the
+        joint's velocity now.
         """
-        error = abs(wanted - float(data.qvel[self.dof_adr]))
+        error = abs(wanted - velocity)
         self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
 
     def feedback(self, data: mujoco.MjData) -> float:

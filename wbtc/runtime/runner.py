@@ -245,7 +245,8 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             if options.on_step and not options.on_step(sim):
                 limit_ms = sim.time_ms
                 reason = options.stop_reason()
-            pace.wait(sim.time)
+            if pace.on:
+                pace.wait(sim.time)
             if options.progress and time.perf_counter() - last_progress > 0.2:
                 last_progress = time.perf_counter()
                 _progress(sim.time, limit_ms / 1000.0)

@@ -8,8 +8,6 @@ Supervisor controllers use ``Supervisor`` (a ``Robot``), ``Node``, ``Field`` and
 
 from __future__ import annotations
 
-import importlib
-
 from .robot import Robot  # noqa: F401 (the one class every controller needs: loaded at once)
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
@@ -39,7 +37,8 @@ def __getattr__(name: str) -> Any:
     module = _MODULES.get(name)
     if module is None:
         raise AttributeError(f"module 'controller' has no attribute {name!r}")
-    value = getattr(importlib.import_module(f".{module}", __name__), name)
+    # __import__ rather than importlib.import_module: importing importlib (and warnings) costs a start-up.
+    value = getattr(__import__(f"{__name__}.{module}", fromlist=[name]), name)
     globals()[name] = value
     return value
 

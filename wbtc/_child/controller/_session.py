@@ -9,12 +9,12 @@ from __future__ import annotations
 import atexit
 import math
 import sys
-import weakref
 
 from .wire import Wire, WireClosed
 
 TYPE_CHECKING = False  # typing itself is not imported: it costs a controller's start-up milliseconds
 if TYPE_CHECKING:
+    import weakref  # only Motion makes weak references (importing weakref costs a start-up 1 ms)
     from collections.abc import Callable
     from typing import Any
 
@@ -121,7 +121,8 @@ class Session:
         if self.ended:
             return -1
         duration = int(duration)
-        self._play_motions(duration)
+        if self.motions:
+            self._play_motions(duration)
         if self.key_pointer == -1:
             self.key_pointer = 0
         if self.battery_value < 0.0:
@@ -163,14 +164,17 @@ class Session:
     def _absorb(self, reply: dict) -> None:
         if "time" in reply:
             self.time = float(reply["time"])
+        by_tag = self.by_tag
         for tag, value in (reply.get("values") or {}).items():
-            state = self.by_tag.get(tag)
+            state = by_tag.get(tag)
             if state is None:
                 continue
             if state.absorb is None:
                 state.value = value
             else:
                 state.absorb(state, value)
+        if len(reply) == 3 and "status" in reply and "time" in reply and "values" in reply:
+            return  # most replies: nothing else came (keys, battery, field or device news)
         keys = reply.get("keys")
         if keys is not None:
             self.keys = [int(k) for k in keys[:MAX_KEYS]]

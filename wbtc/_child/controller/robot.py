@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib
 import sys
 import time as _time
 
@@ -39,7 +38,8 @@ def device_class(type_name: str) -> type[Device] | None:
     where = DEVICE_CLASSES.get(type_name)
     if where is None:
         return None
-    module = importlib.import_module(f".{where[0]}", __package__)
+    # __import__ rather than importlib.import_module: importing importlib (and warnings) costs a start-up.
+    module = __import__(f"{__package__}.{where[0]}", fromlist=[where[1]])
     return getattr(module, where[1])
 
 

@@ -176,17 +176,54 @@ def encode(obj: Any) -> bytes:
     Raises:
         TypeError: something in the message is not plain data and cannot be made so.
     """
-    buffer = io.BytesIO()
+    # A pickler and its buffer are reused (one per thread at a time: list.pop and append are atomic):
+    # making them costs more than pickling a step's few values. Its memo is cleared first, so every
+    # frame is the bytes a fresh pickler writes.
+    encoder = _ENCODERS.pop() if _ENCODERS else _Encoder()
     try:
-        _PlainPickler(buffer, protocol=PROTOCOL).dump(obj)
-        payload = buffer.getvalue()
+        return encoder.frame(obj)
     except (_NotPlain, pickle.PicklingError, AttributeError, TypeError):
         try:
             payload = pickle.dumps(plain(obj), protocol=PROTOCOL)  # builtins only now: nothing to refuse
         except (pickle.PicklingError, AttributeError, TypeError) as exc:
             raise TypeError(f"wbtc: a value passed to the controller API is not plain data (numbers, strings, "
                             f"bytes, lists, tuples, dicts, None): {exc}") from None
-    return _HEADER.pack(len(payload)) + payload
+        return _HEADER.pack(len(payload)) + payload
+    finally:
+        _ENCODERS.append(encoder)
+
+
+class _Encoder:
+    """A `_PlainPickler` writing after a length header into its own buffer."""
+
+    _BIG = 1 << 20  # a buffer that grew past this (camera images) is not kept
+
+    def __init__(self) -> None:
+        self._renew()
+
+    def _renew(self) -> None:
+        self.buffer = io.BytesIO()
+        self.pickler = _PlainPickler(self.buffer, protocol=PROTOCOL)
+
+    def frame(self, obj: Any) -> bytes:
+        """The frame of `obj`; raises what the pickler raises (`_NotPlain` and others)."""
+        buffer = self.buffer
+        buffer.seek(0)
+        buffer.truncate()
+        buffer.write(_NO_SIZE)
+        self.pickler.clear_memo()
+        self.pickler.dump(obj)
+        end = buffer.tell()
+        buffer.seek(0)
+        buffer.write(_HEADER.pack(end - _HEADER.size))
+        frame = buffer.getvalue()
+        if end > self._BIG:
+            self._renew()  # let a large buffer go
+        return frame
+
+
+_ENCODERS: list[_Encoder] = []
+_NO_SIZE = bytes(_HEADER.size)
 
 
 def plain(obj: Any) -> Any:
@@ -323,7 +360,7 @@ class Wire:
 
     def send(self, obj: Any) -> None:
         """Send one message."""
-        send_frame(self.sock, obj)
+        self.sock.sendall(encode(obj))  # send_frame's one line: a call less on every step
 
     def recv(self) -> Any:
         """Receive one message (raises WireClosed at end of stream)."""
