@@ -69,7 +69,9 @@ def test_actuator_commands_and_local_state(sim) -> None:
         (5, "turnOn"),
     ]
     rc, out, err = fake.finish()
-    assert (rc, err) == (0, "")
+    # The sound file is not there: Webots warns (and the library keeps it playing, see below).
+    assert (rc, err) == (0, "WARNING: Sound file 'sounds/beep.wav' not found. The sound file should be defined "
+                            "relatively to the controller, the PROTO or absolutely.\n")
     assert json_lines(out) == [[0, 0, 32, 16, False, False, "pico", "en-US"], [2, True, True, 1]]
 
 
@@ -105,3 +107,46 @@ def test_presence_radar_range_finder_and_altimeter_values(sim) -> None:
         [[1.0, 2.0, 3.0, float("inf")], [[1.0, 2.0], [3.0, float("inf")]], 0],
     ]
     assert os.path.getsize(fake.path.parent / "depth.png") > 50
+
+
+def test_speaker_plays_a_wav_for_its_length_and_speaks_for_an_estimate(sim, tmp_path) -> None:
+    # Webots' library marks a sound playing from the call until the simulator says it is over: wbtc
+    # counts a WAV file's length at its pitch (0.5 s at pitch 2: 0.25 s), a looped or unreadable sound
+    # never ends, and speech lasts an estimate of 0.3 s + 13 characters a second.
+    import wave
+
+    with wave.open(str(tmp_path / "beep.wav"), "wb") as clip:
+        clip.setnchannels(1)
+        clip.setsampwidth(2)
+        clip.setframerate(8000)
+        clip.writeframes(b"\x00\x00" * 4000)
+    fake = sim(
+        """
+        import json
+        from controller import Robot, Speaker
+        robot = Robot()
+        speaker = robot.getDevice("speaker")
+        before = [speaker.isSoundPlaying("beep.wav"), speaker.isSoundPlaying(None), speaker.isSpeaking()]
+        Speaker.playSound(speaker, speaker, "beep.wav", 1.0, 2.0, 0.0, False)
+        Speaker.playSound(speaker, None, "missing.wav", 1.0, 1.0, 0.0, False)
+        speaker.speak("hello world", 1.0)
+        print(json.dumps(before + [speaker.isSoundPlaying("beep.wav"), speaker.isSpeaking()]))
+        for _ in range(3):
+            robot.step(128)
+            print(json.dumps([speaker.isSoundPlaying("beep.wav"), speaker.isSoundPlaying("missing.wav"),
+                              speaker.isSpeaking()]))
+        speaker.stop(None)
+        print(json.dumps([speaker.isSoundPlaying(None), speaker.isSpeaking()]))
+        """,
+        make_init(DEVICES),
+    )
+    for time in (0.128, 0.256, 1.28):
+        fake.step(time=time)
+    code, out, err = fake.finish()
+    assert code == 0, err
+    assert json_lines(out) == [[False, False, False, True, True],
+                               [True, True, True],     # 0.128 s: all three still going
+                               [False, True, True],    # 0.256 s: the beep (0.25 s) is over
+                               [False, True, False],   # 1.28 s: "hello world" (1.15 s) too; missing never ends
+                               [False, False]]
+    assert "Sound file 'missing.wav' not found" in err
