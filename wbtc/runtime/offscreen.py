@@ -192,7 +192,7 @@ class Offscreen:
     def draw(self, data: mujoco.MjData, camera: int, near: float | None = None,
              pose: tuple[np.ndarray, np.ndarray] | None = None, far: float | None = None,
              spots: list[tuple[np.ndarray, np.ndarray, float]] | None = None,
-             exposure: float | None = 1.0) -> np.ndarray:
+             exposure: float | None = 1.0, view: mujoco.MjvCamera | None = None) -> np.ndarray:
         """Render model camera `camera` (-1: MuJoCo's default free camera) into the reused buffer.
 
         Args:
@@ -204,6 +204,8 @@ class Offscreen:
             spots: laser spots to draw (centre, surface normal, radius), as Webots' cameras see them.
             exposure: the camera's exposure, for the tone curve; None returns the drawn linear levels
                 (radiance × 255 / `tone.HEADROOM`), for effects Webots applies before its tone mapping.
+            view: a camera of the caller's own (the window's free, tracking or fixed one), used as it
+                is instead of `camera` (pass -1 for `camera`).
 
         Returns:
             The RGB pixels, rows from the **bottom**; overwritten by the next `draw`.
@@ -213,8 +215,10 @@ class Offscreen:
         self.gl.make_current()
         if self.textures:
             self.upload_textures()
-        cam = self.camera
-        if camera < 0:
+        cam = self.camera if view is None else view
+        if view is not None:
+            pass
+        elif camera < 0:
             cam.type = mujoco.mjtCamera.mjCAMERA_FREE
             mujoco.mjv_defaultFreeCamera(self.model, cam)
         else:

@@ -1,7 +1,9 @@
 """The window of `wbtc run` with a display: the world from its Viewpoint, an overlay, Webots' keys.
 
 wbtc draws the window itself (GLFW and MuJoCo's renderer) rather than through MuJoCo's passive
-viewer: its panels, its own key bindings and its window size are not Webots'. The window:
+viewer: its panels, its own key bindings and its window size are not Webots'. The scene is drawn
+offscreen through Webots' colour pipeline (`offscreen`, `tone`), as camera images and recordings, and
+copied into the window under the overlays. The window:
 
 - opens at 80 % of the screen, seeing the scene from the world's `Viewpoint` (position, orientation,
   fieldOfView, and its `follow`, as recordings do); dragging the mouse turns the view (left button),
@@ -28,6 +30,7 @@ import numpy as np
 
 from wbtc.runtime.controls import Controls, webots_key
 from wbtc.runtime.labels import LabelPainter
+from wbtc.runtime.offscreen import Offscreen
 from wbtc.runtime.record import Follow, viewpoint_camera
 
 if TYPE_CHECKING:
@@ -74,6 +77,7 @@ class Window:
         self.speed = (time.perf_counter(), sim.time, 0.0)  # (wall, sim, factor) of the last estimate
         self.last_frame = 0.0
         self.frame_cost = 0.0  # seconds the last frame took to draw
+        self._offscreen: tuple[tuple[int, int, int], Offscreen] | None = None  # (size, generation), renderer
         self._build(sim)
         self._callbacks(sim)
         self._draw(sim)
@@ -169,7 +173,9 @@ class Window:
     def _move(self, sim: Simulation, action: int, dx: float, dy: float) -> None:
         self._to_free(sim)
         _, height = glfw.get_window_size(self.window)
-        mujoco.mjv_moveCamera(sim.model, action, dx / max(height, 1), dy / max(height, 1), self.scene, self.camera)
+        # The scene last drawn holds the view the move is relative to (the offscreen renderer's).
+        scene = self._offscreen[1].scene if self._offscreen is not None else self.scene
+        mujoco.mjv_moveCamera(sim.model, action, dx / max(height, 1), dy / max(height, 1), scene, self.camera)
 
     # -- the run's hook -------------------------------------------------------------------------------
     def sync(self, sim: Simulation) -> bool:
@@ -234,14 +240,17 @@ class Window:
         viewport = mujoco.MjrRect(0, 0, width, height)
         saved = sim.data.cam_xpos.copy(), sim.data.cam_xmat.copy()
         self._view(sim)
-        mujoco.mjv_updateScene(sim.model, sim.data, self.option, None, self.camera, mujoco.mjtCatBit.mjCAT_ALL,
-                               self.scene)
+        # The scene goes through Webots' colour pipeline as camera images and recordings do (linear
+        # colours, its light terms, the tone curve at the Viewpoint's exposure): drawn offscreen, then
+        # copied into the window, under the overlays.
+        exposure = float((sim.table.viewpoint or {}).get("exposure", 1.0))
+        rgb = self._renderer(sim, width, height).draw(sim.data, -1, exposure=exposure, view=self.camera)
         sim.data.cam_xpos[:], sim.data.cam_xmat[:] = saved
-        for tex, version in sim.texture_versions.items():  # what Displays drew since the last frame
-            if self.uploaded.get(tex) != version:
-                mujoco.mjr_uploadTexture(sim.model, self.context, tex)
-                self.uploaded[tex] = version
-        mujoco.mjr_render(viewport, self.scene, self.context)
+        glfw.make_context_current(self.window)
+        from OpenGL import GL
+
+        GL.glWindowPos2i(0, 0)
+        GL.glDrawPixels(width, height, GL.GL_RGB, GL.GL_UNSIGNED_BYTE, np.ascontiguousarray(rgb))
         if sim.labels:
             self._labels(sim, viewport)
         names, values = self.overlay(sim)
@@ -253,6 +262,17 @@ class Window:
         glfw.swap_buffers(self.window)
         glfw.set_window_title(self.window, f"wbtc: {self.world_name} {clock(sim.time)}")
         self.frame_cost = time.perf_counter() - start
+
+    def _renderer(self, sim: Simulation, width: int, height: int) -> Offscreen:
+        """The offscreen renderer of the window's size and model (made again when either changes)."""
+        key = (width, height, sim.generation)
+        if self._offscreen is None or self._offscreen[0] != key:
+            if self._offscreen is not None:
+                self._offscreen[1].close()
+            renderer = Offscreen(sim.model, width, height, antialias=True, textures=sim.texture_versions,
+                                 camera_light=sim.camera_light(), light_boost=sim.light_boost())
+            self._offscreen = (key, renderer)
+        return self._offscreen[1]
 
     def _labels(self, sim: Simulation, viewport: mujoco.MjrRect) -> None:
         """Supervisor labels, each drawn as an image blended over the frame at its place.
@@ -297,6 +317,9 @@ class Window:
 
     def close(self) -> None:
         """Close the window."""
+        if self._offscreen is not None:
+            self._offscreen[1].close()
+            self._offscreen = None
         if self.window:
             glfw.destroy_window(self.window)
             self.window = None
