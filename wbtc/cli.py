@@ -189,9 +189,9 @@ def main() -> None:
             code = 1
         sys.stdout.flush()
         sys.stderr.flush()
-        expand = sys.modules.get("wbtc.proto.expand")
-        if expand is not None:  # what atexit would have cleaned: templates' temporary files
-            expand.remove_temporary_files()
+        files = sys.modules.get("wbtc.proto.template_files")
+        if files is not None:  # what atexit would have cleaned: templates' temporary files
+            files.remove_temporary_files()
         os._exit(int(code or 0))
 
 

@@ -13,12 +13,8 @@ Not honoured yet: re-expansion when a field changes at run time (supervisor, iss
 
 from __future__ import annotations
 
-import atexit
 import json
-import os
 import re
-import shutil
-import tempfile
 from collections import Counter
 from dataclasses import dataclass, field, replace
 from functools import lru_cache
@@ -31,6 +27,7 @@ from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
 from wbtc.proto.hidden import apply_hidden
 from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
+from wbtc.proto.template_files import generation, temporary_files_path
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.legacy_nodes import convert_differential_wheels
 from wbtc.scene.model import Node, Scene, walk
@@ -343,7 +340,7 @@ class Expander:
         # A nonDeterministic PROTO (random numbers, files) is generated anew at each reset, as in Webots;
         # within one generation the world's several loads (check, compile) share its text.
         if "nonDeterministic" in model.tags:
-            key = (*key, "generation", _GENERATION[0])
+            key = (*key, "generation", generation())
         cached = _RENDERED.get(key)
         if cached is not None:
             return parse_body(cached, str(model.path), span.line, span.column)
@@ -376,32 +373,6 @@ class Expander:
 
 _FAILED = object()
 _RENDERED: dict[tuple[Any, ...], str] = {}
-_TEMPORARY: list[str] = []
-_GENERATION = [0]
-
-
-def regenerate_non_deterministic() -> None:
-    """Make the next expansions generate nonDeterministic PROTOs anew (a simulation reset)."""
-    _GENERATION[0] += 1
-
-
-def temporary_files_path() -> str:
-    """The folder of this process for templates' files (`context.temporary_files_path`, ending in /).
-
-    Webots gives each of its runs a fresh temporary folder, so a file a template writes there (a count
-    of its regenerations) starts anew with the run; the folder goes when the process ends.
-    """
-    if not _TEMPORARY:
-        folder = tempfile.mkdtemp(prefix="wbtc-templates-")
-        atexit.register(remove_temporary_files)
-        _TEMPORARY.append(folder + os.sep)
-    return _TEMPORARY[0]
-
-
-def remove_temporary_files() -> None:
-    """Remove the templates' temporary folder (at exit; `wbtc run` calls it before its quick exit)."""
-    while _TEMPORARY:
-        shutil.rmtree(_TEMPORARY.pop(), ignore_errors=True)
 _FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
 
 

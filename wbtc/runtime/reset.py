@@ -20,8 +20,8 @@ import copy
 from dataclasses import dataclass, field
 from typing import Any
 
-from wbtc.proto.expand import regenerate_non_deterministic
 from wbtc.proto.model import load_proto
+from wbtc.proto.template_files import regenerate_non_deterministic
 from wbtc.runtime import scene_ops
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.scene.model import Node

@@ -18,10 +18,9 @@ import numpy as np
 from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.table import DeviceEntry, RobotEntry
-from wbtc.runtime import conveyors, tracks
+from wbtc.runtime import conveyors, substeps, tone, tracks
 from wbtc.runtime.battery import Battery
 from wbtc.runtime.connectors import Connector
-from wbtc.runtime.contact_frames import ContactFrames
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
@@ -97,7 +96,7 @@ class Simulation:
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
-        self._frames: ContactFrames | None = None  # asymmetric-friction contacts, per model
+        self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
@@ -149,7 +148,7 @@ class Simulation:
         """
         motors = [m for r in self.robots for m in r.motors.values()
                   if isinstance(m, Motor) and m.entry.actuator and (m.feedback_period > 0 or m.metered)]
-        substep = self._substep(model)
+        substep = substeps.substep_function(self, model)
         if not motors and substep is mujoco.mj_step:
             mujoco.mj_step(model, data, nstep=self.substeps)
             return
@@ -163,35 +162,6 @@ class Simulation:
             total += data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs]
         for motor, force in zip(motors, total / self.substeps, strict=True):
             motor.step_force = float(force)
-
-    def _substep(self, model: mujoco.MjModel) -> Any:
-        """`mj_step`, or a step split where Webots' contact rules act on this substep's contacts.
-
-        Between MuJoCo's two halves, asymmetric-friction contacts are turned to Webots' friction
-        directions (which rebuilds the constraints), then Tracks' belt contacts get their velocity.
-        """
-        hooks = []
-        if self.table.asymmetric_friction is not None:
-            hooks.append(self._contact_frames(model).orient)
-        belts = tracks.surface_hook(self)
-        if belts is not None:
-            hooks.append(belts)
-        if not hooks:
-            return mujoco.mj_step
-
-        def step(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-            mujoco.mj_step1(model, data)
-            for hook in hooks:
-                hook(model, data)
-            mujoco.mj_step2(model, data)
-
-        return step
-
-    def _contact_frames(self, model: mujoco.MjModel) -> ContactFrames:
-        """The asymmetric-friction contacts of `model` (made once per model: a recompile makes another)."""
-        if self._frames is None or self._frames.model is not model:
-            self._frames = ContactFrames(model, self.table.asymmetric_friction)
-        return self._frames
 
     def _move_kinematic(self, ts: float) -> None:
         """Advance the kinematically moving bodies by one step of their velocity (world frame)."""
@@ -386,27 +356,12 @@ class Simulation:
         return renderer
 
     def camera_light(self) -> np.ndarray | None:
-        """Each material's (emission, colour factor) in cameras (`DeviceTable.camera_light`), by id."""
-        lights = self.table.camera_light
-        if not lights:
-            return None
-        values = np.column_stack([self.model.mat_emission.astype(float), np.ones(self.model.nmat)])
-        for name, value in lights.items():
-            material = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_MATERIAL, name)
-            if material >= 0:
-                values[material] = value
-        return values
+        """Each material's (emission, colour factor) in cameras, by id (see `tone.material_lighting`)."""
+        return tone.material_lighting(self.model, self.table.camera_light)
 
     def light_boost(self) -> np.ndarray | None:
-        """Each light's diffuse factor in cameras (`DeviceTable.light_boost`), by id; None when all are 1."""
-        if not self.table.light_boost:
-            return None
-        values = np.ones(self.model.nlight)
-        for name, value in self.table.light_boost.items():
-            light = mujoco.mj_name2id(self.model, mujoco.mjtObj.mjOBJ_LIGHT, name)
-            if light >= 0:
-                values[light] = value
-        return values
+        """Each light's diffuse factor in cameras, by id (see `tone.light_boost`)."""
+        return tone.light_boost(self.model, self.table.light_boost)
 
     def render(self, camera: int, width: int, height: int) -> np.ndarray:
         """An RGB image (rows from the top) from a model camera (-1: MuJoCo's free camera)."""

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import functools
 
+import mujoco
 import numpy as np
 
 #: Radiance that fills MuJoCo's 8-bit range (the scene is drawn with its light divided by this).
@@ -93,3 +94,31 @@ def apply(pixels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
     """Map drawn 8-bit pixels through the curve in place; returns `pixels`."""
     np.take(curve(exposure), pixels, out=pixels)
     return pixels
+
+
+def material_lighting(model: mujoco.MjModel, by_name: dict[str, tuple[float, float]]) -> np.ndarray | None:
+    """Each material's (emission, colour factor) in cameras, by id; None when the table has none.
+
+    `by_name` is `DeviceTable.camera_light`; a material it does not name keeps its own emission and
+    colour.
+    """
+    if not by_name:
+        return None
+    values = np.column_stack([model.mat_emission.astype(float), np.ones(model.nmat)])
+    for name, value in by_name.items():
+        material = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_MATERIAL, name)
+        if material >= 0:
+            values[material] = value
+    return values
+
+
+def light_boost(model: mujoco.MjModel, by_name: dict[str, float]) -> np.ndarray | None:
+    """Each light's diffuse factor in cameras, by id (`DeviceTable.light_boost`); None when all are 1."""
+    if not by_name:
+        return None
+    values = np.ones(model.nlight)
+    for name, value in by_name.items():
+        light = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_LIGHT, name)
+        if light >= 0:
+            values[light] = value
+    return values
