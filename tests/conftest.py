@@ -1,5 +1,9 @@
 """Shared test helpers: where the shared corpus and lessons are."""
 
+import atexit
+import os
+import shutil
+import tempfile
 from pathlib import Path
 
 import wbtc  # noqa: F401  (picks headless OpenGL before any test module imports MuJoCo)
@@ -7,6 +11,12 @@ import wbtc  # noqa: F401  (picks headless OpenGL before any test module imports
 REPO = Path(__file__).resolve().parent.parent
 SHARED = REPO.parent / "shared"
 CORPUS = SHARED / "corpus"
+
+# The world cache of this test session (`wbtc.world_cache`): runs of one world within the session share
+# it, and the user's own cache is left alone.
+os.environ["WBTC_CACHE_DIR"] = tempfile.mkdtemp(prefix="wbtc-test-cache-")
+os.environ.pop("WBTC_NO_CACHE", None)
+atexit.register(shutil.rmtree, os.environ["WBTC_CACHE_DIR"], ignore_errors=True)
 LESSONS = CORPUS.parent / "lessons"
 
 

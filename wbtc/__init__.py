@@ -9,7 +9,6 @@ The pipeline's stages are plain functions (see README's architecture section):
 
 from __future__ import annotations
 
-import ctypes.util
 import os
 
 
@@ -19,7 +18,9 @@ def _choose_headless_gl() -> None:
         return
     if os.name != "posix" or os.uname().sysname == "Darwin":
         return  # macOS and Windows render offscreen with their own GL
-    os.environ["MUJOCO_GL"] = "egl" if ctypes.util.find_library("EGL") else "osmesa"
+    from wbtc.gl_platform import headless_platform
+
+    os.environ["MUJOCO_GL"] = headless_platform()
     os.environ.setdefault("PYOPENGL_PLATFORM", os.environ["MUJOCO_GL"])
 
 

@@ -15,6 +15,7 @@ from typing import Annotated, TypeVar
 import typer
 
 from wbtc.errors import Diagnostic, WbtcError, render_diagnostic
+from wbtc.gl_platform import import_mujoco_without_gl
 
 app = typer.Typer(
     name="wbtc",
@@ -93,6 +94,7 @@ def compile_command(
     substep: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
 ) -> None:
     """Compile a world to a MuJoCo model (MJCF), with its textures beside it."""
+    import_mujoco_without_gl()  # compiling draws nothing
     from wbtc.compile.context import CompileOptions
     from wbtc.compile.output import write_mjcf
     from wbtc.pipeline import compile_world
@@ -122,6 +124,7 @@ def run(
     = None,
 ) -> None:
     """Simulate a world and run its robots' Python controllers."""
+    import_mujoco_without_gl()  # a run without cameras never loads OpenGL
     from wbtc.runtime.launch import launch
 
     code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,

@@ -29,17 +29,35 @@ class CompileResult:
     """What compiling a scene gives.
 
     Attributes:
-        spec: the MuJoCo spec (write MJCF with `spec.to_xml()`; textures are in `spec.assets`).
         model: the compiled model.
         table: the DeviceTable for the runtime.
         warnings: Webots fields not honoured yet, unreadable files, approximations.
+        texture_paths: each MuJoCo texture's image file.
+        scene: the scene that was compiled, and `options` how (to compile it again for `spec`).
     """
 
-    spec: mujoco.MjSpec
     model: mujoco.MjModel
     table: DeviceTable
     warnings: list[Diagnostic] = field(default_factory=list)
     texture_paths: dict[str, str] = field(default_factory=dict)
+    scene: Scene | None = None
+    options: CompileOptions | None = None
+    built_spec: mujoco.MjSpec | None = field(default=None, repr=False)
+
+    @property
+    def spec(self) -> mujoco.MjSpec:
+        """The MuJoCo spec (write MJCF with `spec.to_xml()`; textures are in `spec.assets`).
+
+        A spec does not pickle: a result read back from `wbtc.world_cache` compiles its scene again
+        the first time its spec is asked for (the same scene and options give the same elements).
+        """
+        if self.built_spec is None:
+            self.built_spec = compile_scene(self.scene, self.options).built_spec
+        return self.built_spec
+
+    def __getstate__(self) -> dict:
+        """Everything but the spec (see `spec`)."""
+        return {**self.__dict__, "built_spec": None}
 
     def summary(self) -> str:
         """The one-line summary `wbtc compile` prints."""
@@ -89,7 +107,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     model = _compile(spec)
     device.tune_servos(spec, model)
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)
-    return CompileResult(spec, model, ctx.table, ctx.warnings, ctx.texture_paths)
+    return CompileResult(model, ctx.table, ctx.warnings, ctx.texture_paths, scene, options, spec)
 
 
 #: Half the thickness of the box a Plane in a moving body becomes (metres).

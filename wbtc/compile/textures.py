@@ -35,6 +35,10 @@ import numpy as np
 #: URL schemes that cannot be read offline.
 _REMOTE = ("webots://", "http://", "https://")
 
+#: Lists that collect every path `resolve_url` looks at, found or not (`wbtc.world_cache` watches
+#: what a world's result depends on this way).
+LOOKED_AT: list[list[str]] = []
+
 
 def resolve_url(urls: list[str], base_file: str) -> str | None:
     """The first URL of a Webots url field that names an existing local file.
@@ -53,6 +57,8 @@ def resolve_url(urls: list[str], base_file: str) -> str | None:
             continue
         path = url if os.path.isabs(url) else os.path.join(folder, url)
         path = os.path.normpath(path)
+        for watcher in LOOKED_AT:
+            watcher.append(path)
         if os.path.isfile(path):
             return path
     return None

@@ -7,6 +7,7 @@ never share body nodes.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
@@ -65,9 +66,26 @@ class ProtoModel:
         return proto_tags(self.path)
 
 
-@lru_cache(maxsize=512)
+def _stamp(path: Path) -> tuple[int, int]:
+    """A file's size and modification time, in the keys of the caches below.
+
+    So a long-lived program (a notebook running a world while its PROTOs are edited) reads a PROTO
+    file again once it changed.
+    """
+    try:
+        info = os.stat(path)
+    except OSError:
+        return (-1, 0)
+    return (info.st_size, info.st_mtime_ns)
+
+
 def proto_tags(path: Path) -> frozenset[str]:
     """The `# tags: a, b` words of a PROTO file's leading comment lines (empty when it has none)."""
+    return _proto_tags(path, _stamp(path))
+
+
+@lru_cache(maxsize=512)
+def _proto_tags(path: Path, stamp: tuple[int, int]) -> frozenset[str]:
     tags: set[str] = set()
     try:
         with open(path, encoding="utf-8", errors="replace") as handle:
@@ -120,13 +138,17 @@ def written_version(path: str, world: str, world_version: Version | None) -> Ver
     return world_version
 
 
-@lru_cache(maxsize=512)
 def load_proto(path: Path) -> ProtoModel:
-    """Read and cache a PROTO file.
+    """Read and cache a PROTO file (read again once it changed).
 
     Raises:
         WbtcError: the file cannot be read or is malformed.
     """
+    return _load_proto(path, _stamp(path))
+
+
+@lru_cache(maxsize=512)
+def _load_proto(path: Path, stamp: tuple[int, int]) -> ProtoModel:
     syntax = parse_file(path)
     if not syntax.protos:
         raise ProtoError(f"{path.name} declares no PROTO", None)

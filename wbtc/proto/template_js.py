@@ -45,6 +45,7 @@ from wbtc.proto.template_common import (
     plain_value,
     proto_error,
 )
+from wbtc.proto.template_files import note_outside_input
 
 _JS_DIR = Path(__file__).with_name("js")
 
@@ -130,12 +131,14 @@ class JsEngine:
         state = self._state
 
         def file_exists(path: str) -> bool:
+            note_outside_input()
             try:
                 return state.resolve(str(path)).is_file()
             except Exception:  # noqa: BLE001 - any failure means "no"
                 return False
 
         def read_text_file(path: str) -> str | None:
+            note_outside_input()
             try:
                 return state.resolve(str(path)).read_text(encoding="utf-8", errors="replace")
             except Exception:  # noqa: BLE001

@@ -29,6 +29,7 @@ from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
 from wbtc.runtime.supervisor import SupervisorHub
 from wbtc.scene.model import Scene
+from wbtc.world_cache import load_and_compile
 
 if TYPE_CHECKING:
     from wbtc.runtime.animation import PageRecorder
@@ -55,9 +56,12 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
         WbtcError: the world does not load or compile, or an override names nothing.
     """
     compile_options = CompileOptions(max_substep_ms=physics_step)
-    scene, expansion = load_world(world)
-    apply_overrides(scene, fields or {})
-    result = compile_scene(scene, compile_options)
+    if fields:
+        scene, expansion = load_world(world)
+        apply_overrides(scene, fields)
+        result = compile_scene(scene, compile_options)
+    else:  # the world as written: what the last run of it gave, when nothing it was made from changed
+        scene, expansion, result = load_and_compile(world, compile_options)
     unhonoured = [w for w in result.warnings if "not honoured" in w.message]
     warnings = expansion.warnings + [w for w in result.warnings if w not in unhonoured]
     sim = Simulation(result, seed=seed, noise=noise)
@@ -161,9 +165,9 @@ def _has_display() -> bool:
     # Python's reach): run headless, and let cameras render with headless OpenGL too.
     print(f"wbtc: the display {named!r} does not answer; running headless", file=sys.stderr)
     if not os.environ.get("MUJOCO_GL"):
-        import ctypes.util
+        from wbtc.gl_platform import headless_platform
 
-        os.environ["MUJOCO_GL"] = "egl" if ctypes.util.find_library("EGL") else "osmesa"
+        os.environ["MUJOCO_GL"] = headless_platform()
         os.environ.setdefault("PYOPENGL_PLATFORM", os.environ["MUJOCO_GL"])
     return False
 

@@ -27,13 +27,12 @@ HDR buffer is float), so shades darker than about 0.03 read 0 or 28.
 
 from __future__ import annotations
 
-import importlib
 import math
-import os
 
 import mujoco
 import numpy as np
 
+from wbtc.gl_platform import gl_context
 from wbtc.runtime import tone
 
 #: Scene flags for every image: no reflections, haze or post-processing.
@@ -42,21 +41,6 @@ _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco
 
 #: The laser spot as Webots' cameras show it: an emissive red that reads 0xEF after their tone mapping.
 _SPOT_RGBA = np.array([tone.inverse(239) / 255, 0.0, 0.0, 1.0], dtype=np.float32)
-
-
-def _gl_context(width: int, height: int) -> object:
-    """An OpenGL context for offscreen images.
-
-    MuJoCo picks its OpenGL platform once, when it is imported, from MUJOCO_GL: a script that imported
-    `mujoco` before `wbtc` on a machine without a display got GLFW, which needs one. wbtc has set
-    MUJOCO_GL to the headless platform since (see `wbtc._choose_headless_gl`): that platform's context
-    is used then.
-    """
-    platform = os.environ.get("MUJOCO_GL", "")
-    if platform in ("egl", "osmesa") and mujoco.GLContext.__module__.startswith("mujoco.glfw"):
-        module = importlib.import_module(f"mujoco.{platform}")
-        return module.GLContext(width, height)
-    return mujoco.GLContext(width, height)
 
 
 class Offscreen:
@@ -98,7 +82,7 @@ class Offscreen:
         if not shadows:
             vis.quality.shadowsize = 0  # no shadow map (MuJoCo's default one takes 85 ms to make)
         try:
-            self.gl = _gl_context(self.width, self.height)
+            self.gl = gl_context(self.width, self.height)
             self.gl.make_current()
             self.context: mujoco.MjrContext | None = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
         finally:
