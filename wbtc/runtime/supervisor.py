@@ -29,24 +29,21 @@ settings are used), pose and contact-point tracking (answered on demand).
 
 from __future__ import annotations
 
-import math
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import mujoco
 import numpy as np
 
-from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
-from wbtc.runtime import poses, scene_ops, states, visibility, world_file
-from wbtc.runtime.rebuild import shift_device_times, swap_model
+from wbtc.runtime import poses, scene_ops, states, supervisor_world, visibility, world_file
+from wbtc.runtime import supervisor_queries as queries
 from wbtc.runtime.recordings import RecordingError, Recordings
 from wbtc.runtime.reset import Initial
 from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, actual_field, items_of, proto_names, to_typed
-from wbtc.runtime.simulation import RobotState, Simulation, descends
+from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.scene.model import Node, Scene
 
 _POSE_FIELDS = ("translation", "rotation")
@@ -110,7 +107,11 @@ class SupervisorHub:
         if op.startswith("proto."):
             return self._proto_query(op[6:], self._node(args[0]), int(args[1]), args[2:])
         if op == "field.get":
-            return self._field_get(self._field(args[0]), int(args[1]))
+            ref, index = self._field(args[0]), int(args[1])
+            try:
+                return queries.field_value(self.sim, self.tree, ref, index)
+            except IndexError:
+                raise SupervisorError(f"Error: index {index} out of range for field '{ref.name}'.") from None
         if op == "field.getActualField":
             actual = actual_field(self.tree, self._field(args[0]))
             return self.tree.field_ref(actual) if actual is not None else None
@@ -153,14 +154,8 @@ class SupervisorHub:
         if op == "getNumberOfFields":
             return len(tree.field_names(node, node.proto is not None and not (args and bool(args[0]))))
         if op in ("getPosition", "getOrientation", "getPose"):
-            if not node.is_a("Pose"):  # Webots: a node that is no Pose (a Group, an Appearance) has no pose
-                return [math.nan] * {"getPosition": 3, "getOrientation": 9, "getPose": 16}[op]
-            rot, pos = poses.world_pose(sim, node, self.tree.parent)
-            if op == "getPosition":
-                return [float(v) for v in pos]
-            if op == "getOrientation":
-                return [float(v) for v in rot.ravel()]
-            return self._pose(rot, pos, args)
+            relative_to = self._node(args[0]) if op == "getPose" and args and int(args[0]) >= 0 else None
+            return queries.pose(sim, tree, node, op, relative_to)
         if op == "getCenterOfMass":
             body = poses.solid_body(sim, node)
             com = sim.data.subtree_com[body] if body is not None else np.zeros(3)
@@ -168,76 +163,12 @@ class SupervisorHub:
         if op == "getVelocity":
             return poses.velocity(sim, node, self.tree.parent)
         if op == "getContactPoints":
-            return self._contacts(node, bool(args[0]) if args else False)
+            return queries.contact_points(sim, tree, node, bool(args[0]) if args else False)
         if op == "getStaticBalance":
             return bool(np.abs(sim.data.qvel).max(initial=0.0) < 1e-3)
         if op == "exportString":
             return scene_ops.export_string(node)
         raise SupervisorError(f"Error: {op}() is not supported by wbtc yet.")
-
-    def _pose(self, rot: np.ndarray, pos: np.ndarray, args: tuple) -> list[float]:
-        matrix = np.eye(4)
-        matrix[:3, :3], matrix[:3, 3] = rot, pos
-        if args and int(args[0]) >= 0:
-            frot, fpos = poses.world_pose(self.sim, self._node(args[0]), self.tree.parent)
-            base = np.eye(4)
-            base[:3, :3], base[:3, 3] = frot, fpos
-            matrix = np.linalg.inv(base) @ matrix
-        return [float(v) for v in matrix.ravel()]
-
-    def _contacts(self, node: Node, descendants: bool) -> list[tuple[list[float], int]]:
-        sim = self.sim
-        body = poses.solid_body(sim, node)
-        if body is None:
-            return []
-        if descendants and self._below_a_solid(node):
-            # Webots (WbSolid::extractContactPoints) lists descendants' points only for a top Solid: a point
-            # counts when one of its solids' topSolid() is this node, so a Solid inside another lists none.
-            return []
-        owners = {sim.model.body(name).id: n for n in self.tree.by_id.values()
-                  if (name := (sim.table.solids.get(id(n)) or ("",))[0])}
-        points = []
-        for i in range(sim.data.ncon):
-            contact = sim.data.contact[i]
-            for geom in (contact.geom1, contact.geom2):
-                b = int(sim.model.geom_bodyid[geom])
-                if b == body or (descendants and descends(sim.model, b, body)):
-                    owner = owners.get(b, node)
-                    points.append(([float(v) for v in sim.from_model @ contact.pos], self.tree.node_id(owner)))
-                    break
-        return points
-
-    def _below_a_solid(self, node: Node) -> bool:
-        """Whether a Solid holds `node` somewhere above it (it is not a top Solid)."""
-        parent = self.tree.parent(node)
-        while parent is not None:
-            if parent.is_a("Solid"):
-                return True
-            parent = self.tree.parent(parent)
-        return False
-
-    def _field_get(self, ref: FieldRef, index: int) -> Any:
-        if ref.name in _POSE_FIELDS and not ref.type.startswith("MF"):
-            live = poses.local_pose(self.sim, ref.node)
-            if live is not None:
-                return live[0] if ref.name == "translation" else live[1]
-        elif ref.proto == 1 and ref.type in ("SFVec3f", "SFRotation"):
-            linked = self._linked_pose(ref)
-            if linked is not None:
-                return linked
-        try:
-            return self.tree.plain(ref, index)
-        except IndexError:
-            raise SupervisorError(f"Error: index {index} out of range for field '{ref.name}'.") from None
-
-    def _linked_pose(self, ref: FieldRef) -> Any:
-        """A PROTO parameter written `IS` into an inner Solid's translation or rotation reads where it is now."""
-        linked = self.tree.linked_pose(ref)
-        if linked is None:
-            return None
-        node, name = linked
-        live = poses.local_pose(self.sim, node)
-        return None if live is None else live[0] if name == "translation" else live[1]
 
     def _node(self, node_id: Any) -> Node:
         node = self.tree.by_id.get(int(node_id))
@@ -425,17 +356,6 @@ class SupervisorHub:
                 robot.custom_data = data
                 robot.custom_data_pushed = True
 
-    # -- recompiling ------------------------------------------------------------------------------
-    def _recompile(self, dirty: set[int]) -> None:
-        tree = self.tree
-        for node_id in sorted(dirty):
-            node = tree.by_id.get(node_id)
-            if node is not None and node.proto is not None:
-                scene_ops.reexpand(tree, node)
-        tree.refresh()
-        result = compile_scene(tree.scene, self.options)
-        swap_model(self.sim, result)
-
     def _load_other(self, path: Path) -> None:
         """Check that `worldLoad`'s file reads, then make it the world that resets load."""
         from wbtc.pipeline import load_world
@@ -446,48 +366,12 @@ class SupervisorHub:
             raise SupervisorError(f"Error: wb_supervisor_world_load(): cannot load {path}: {exc}") from None
         self.world = path
 
-    def _reset(self) -> None:
-        """`simulationReset`: Webots' reset, not a reload (see `wbtc.runtime.reset`); controllers go on.
+    # -- recompiling, reset, reload (see `supervisor_world`) ----------------------------------------
+    def _recompile(self, dirty: set[int]) -> None:
+        supervisor_world.recompile(self, dirty)
 
-        Each robot keeps its devices as its controller set them (sampling periods, channels) while its
-        motors start over; time, labels, visibility and random seeds start anew.
-        """
-        self.initial.apply(self.tree)
-        self.sim.hidden.clear()  # Webots resets the nodes' visibility
-        result = compile_scene(self.tree.scene, self.options)
-        shift = self.sim.time_ms
-        swap_model(self.sim, result, keep_time=False, by_name=True)
-        shift_device_times(self.sim, shift)
-        self.sim.time_ms = 0.0
-        self.sim.labels = {}
-        self.sim.reseed()
-        mujoco.mj_forward(self.sim.model, self.sim.data)
+    def _reset(self) -> None:
+        supervisor_world.reset(self)
 
     def _reload(self, keep_controllers: bool = False) -> None:
-        """The world as loaded, at time 0; field handles keep pointing at their nodes.
-
-        Args:
-            keep_controllers: the controllers go on (`simulationReset`): each robot's devices keep
-                what its controller set, its motors only start over, as in Webots.
-        """
-        from wbtc.pipeline import load_world
-
-        scene, _ = load_world(self.world)
-        old = self.tree
-        self.tree = self.sim.tree = SceneTree(scene)
-        for ref in old.fields:  # same field ids, now on the reloaded nodes (a gone node keeps its old one)
-            node = self.tree.by_id.get(old.node_id(ref.node)) or ref.node
-            self.tree.fields.append(FieldRef(ref.id, node, ref.name, ref.type, ref.proto))
-            self.tree.field_keys[(id(node), ref.name, ref.proto)] = ref.id
-        result = compile_scene(scene, self.options)
-        shift = self.sim.time_ms
-        swap_model(self.sim, result, keep_time=False, by_name=keep_controllers)
-        if keep_controllers:
-            shift_device_times(self.sim, shift)
-        self.sim.time_ms = 0.0
-        self.sim.labels = {}
-        self.sim.reseed()  # Webots resets its random seeds with the simulation
-        mujoco.mj_forward(self.sim.model, self.sim.data)
-        if self.states_world != self.world:  # another world (worldLoad): its own "__init__", no saved states
-            self.states, self.states_world = {"__init__": states.capture(self.sim, 0)}, self.world
-        self.initial = Initial.capture(self.tree)
+        supervisor_world.reload(self, keep_controllers)

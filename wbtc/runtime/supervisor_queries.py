@@ -1,0 +1,113 @@
+"""Supervisor queries about where things are: node poses, contact points, and pose fields read live.
+
+`SupervisorHub.call` answers these from the simulation as of the last step:
+
+- `Node.getPosition` / `getOrientation` / `getPose`: the node's world pose in the world's axes (NaN
+  for a node that is no Pose, as Webots answers for a Group or an Appearance); `getPose(other)` is
+  relative to another node's pose;
+- `Node.getContactPoints(includeDescendants)`: each contact point of the Solid's body (and of its
+  descendants' bodies when asked, for a top Solid only, as Webots), with the node id of the Solid
+  that owns the touching body;
+- a field's value: a Solid's `translation` / `rotation` (or a PROTO parameter written `IS` into an
+  inner Solid's) read where the body is now, every other field as the scene holds it.
+
+Not honoured yet: contact point tracking (Webots' `enableContactPointsTracking` keeps points between
+calls; here they are read on demand), and the contact points' order (MuJoCo's collider order).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from wbtc.runtime import poses
+from wbtc.runtime.scene_tree import FieldRef, SceneTree
+from wbtc.runtime.simulation import descends
+from wbtc.scene.model import Node
+
+if TYPE_CHECKING:
+    from wbtc.runtime.simulation import Simulation
+
+_POSE_FIELDS = ("translation", "rotation")
+_POSE_SIZES = {"getPosition": 3, "getOrientation": 9, "getPose": 16}
+
+
+def pose(sim: Simulation, tree: SceneTree, node: Node, op: str, relative_to: Node | None = None) -> list[float]:
+    """`getPosition` (3), `getOrientation` (9, row-major) or `getPose` (16, row-major 4x4) of `node`."""
+    if not node.is_a("Pose"):  # Webots: a node that is no Pose (a Group, an Appearance) has no pose
+        return [math.nan] * _POSE_SIZES[op]
+    rot, pos = poses.world_pose(sim, node, tree.parent)
+    if op == "getPosition":
+        return [float(v) for v in pos]
+    if op == "getOrientation":
+        return [float(v) for v in rot.ravel()]
+    matrix = np.eye(4)
+    matrix[:3, :3], matrix[:3, 3] = rot, pos
+    if relative_to is not None:
+        frot, fpos = poses.world_pose(sim, relative_to, tree.parent)
+        base = np.eye(4)
+        base[:3, :3], base[:3, 3] = frot, fpos
+        matrix = np.linalg.inv(base) @ matrix
+    return [float(v) for v in matrix.ravel()]
+
+
+def contact_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bool) -> list[tuple[list[float], int]]:
+    """The contact points touching `node`'s body (and its descendants'), each with its owner's node id."""
+    body = poses.solid_body(sim, node)
+    if body is None:
+        return []
+    if descendants and _below_a_solid(tree, node):
+        # Webots (WbSolid::extractContactPoints) lists descendants' points only for a top Solid: a point
+        # counts when one of its solids' topSolid() is this node, so a Solid inside another lists none.
+        return []
+    owners = {sim.model.body(name).id: n for n in tree.by_id.values()
+              if (name := (sim.table.solids.get(id(n)) or ("",))[0])}
+    points = []
+    for i in range(sim.data.ncon):
+        contact = sim.data.contact[i]
+        for geom in (contact.geom1, contact.geom2):
+            b = int(sim.model.geom_bodyid[geom])
+            if b == body or (descendants and descends(sim.model, b, body)):
+                owner = owners.get(b, node)
+                points.append(([float(v) for v in sim.from_model @ contact.pos], tree.node_id(owner)))
+                break
+    return points
+
+
+def _below_a_solid(tree: SceneTree, node: Node) -> bool:
+    """Whether a Solid holds `node` somewhere above it (it is not a top Solid)."""
+    parent = tree.parent(node)
+    while parent is not None:
+        if parent.is_a("Solid"):
+            return True
+        parent = tree.parent(parent)
+    return False
+
+
+def field_value(sim: Simulation, tree: SceneTree, ref: FieldRef, index: int) -> Any:
+    """A field's value (item `index` of an MF field), poses read where the bodies are now.
+
+    Raises:
+        IndexError: `index` is past the end of an MF field.
+    """
+    if ref.name in _POSE_FIELDS and not ref.type.startswith("MF"):
+        live = poses.local_pose(sim, ref.node)
+        if live is not None:
+            return live[0] if ref.name == "translation" else live[1]
+    elif ref.proto == 1 and ref.type in ("SFVec3f", "SFRotation"):
+        linked = _linked_pose(sim, tree, ref)
+        if linked is not None:
+            return linked
+    return tree.plain(ref, index)
+
+
+def _linked_pose(sim: Simulation, tree: SceneTree, ref: FieldRef) -> Any:
+    """A PROTO parameter written `IS` into an inner Solid's translation or rotation reads where it is now."""
+    linked = tree.linked_pose(ref)
+    if linked is None:
+        return None
+    node, name = linked
+    live = poses.local_pose(sim, node)
+    return None if live is None else live[0] if name == "translation" else live[1]
