@@ -18,7 +18,8 @@ if TYPE_CHECKING:
 #: robot having a camera), so that starting a controller does not import every device class.
 _MODULES = {
     "Accelerometer": "accelerometer", "Altimeter": "altimeter", "AnsiCodes": "ansi_codes", "Brake": "brake",
-    "Camera": "camera", "CameraRecognitionObject": "camera", "Compass": "compass", "Connector": "connector",
+    "Camera": "camera", "CameraRecognitionObject": "camera_recognition_object", "Compass": "compass",
+    "Connector": "connector",
     "ContactPoint": "contact_point", "DifferentialWheels": "differential_wheels",
     "Display": "display", "DistanceSensor": "distance_sensor", "Emitter": "emitter",
     "Field": "field", "GPS": "gps", "Gyro": "gyro", "InertialUnit": "inertial_unit", "Joystick": "joystick",
