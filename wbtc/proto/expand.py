@@ -13,28 +13,24 @@ Not honoured yet: re-expansion when a field changes at run time (supervisor, iss
 
 from __future__ import annotations
 
-import json
-import re
 from collections import Counter
 from dataclasses import dataclass, field, replace
-from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span, WbtcError
+from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span
 from wbtc.proto.hidden import apply_hidden
 from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
-from wbtc.proto.template_files import generation, temporary_files_path
+from wbtc.proto.template_render import render_body, template_context
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.legacy_nodes import convert_differential_wheels
 from wbtc.scene.model import Node, Scene, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import before_r2022a
-from wbtc.vrml.parser import parse_body
 from wbtc.vrml.values import coerce, format_value
 
 #: Deeper nesting than this is taken for a PROTO that contains itself.
@@ -321,65 +317,15 @@ class Expander:
                 continue
             made.fields[name] = list(linked) if isinstance(linked, list) else linked
 
-    # --- templates -----------------------------------------------------------------------------
+    # --- templates (see `template_render`) -------------------------------------------------------
 
     def _render(self, model: ProtoModel, fields: dict[str, dict[str, Any]], node: Node) -> list[s.NodeSyntax | s.Use]:
-        from wbtc.proto.template import render_template
-
-        context = self._context(model)
-        span = model.syntax.template_span
-        assert span is not None and model.syntax.template is not None
-        # Webots re-generates a template only when a field it reads changes: the text depends on the
-        # fields the template names (and the context), so instances that agree on those share it.
-        read = _fields_read(model.syntax.template)
-        # Everything the template can read is in the key: the fields it names and the whole context (the
-        # world's version, axes and paths), the instance id only when the template reads it.
-        shared = {k: v for k, v in context.items() if k != "id"}
-        key = (model.path, json.dumps({k: v for k, v in fields.items() if k in read}, sort_keys=True, default=str),
-               json.dumps(shared, sort_keys=True, default=str), "context.id" in model.syntax.template and context["id"])
-        # A nonDeterministic PROTO (random numbers, files) is generated anew at each reset, as in Webots;
-        # within one generation the world's several loads (check, compile) share its text.
-        if "nonDeterministic" in model.tags:
-            key = (*key, "generation", generation())
-        cached = _RENDERED.get(key)
-        if cached is not None:
-            return parse_body(cached, str(model.path), span.line, span.column)
-        text, console = render_template(model.syntax.template, language=model.syntax.template_language or "javascript",
-                                        fields=fields, context=context, proto_path=str(model.path),
-                                        body_line=span.line, body_column=span.column)
-        self.result.console.extend(f"{model.name}: {line}" for line in console)
-        _RENDERED[key] = text
-        try:
-            return parse_body(text, str(model.path), span.line, span.column)
-        except WbtcError as exc:
-            raise ProtoError(f"the template of PROTO {model.name} produced invalid VRML: {exc.message}",
-                             exc.span, hint=f"instance at {node.span}") from None
-
-    def _context(self, model: ProtoModel) -> dict[str, Any]:
         self._next_id += 1
-        world = self.world_path.resolve()
-        project = world.parent.parent if world.parent.name == "worlds" else world.parent
-        version = str(self.scene.version) if self.scene.version.major > 1000 else "R2025a"
-        return {
-            "world": str(world), "proto": str(model.path), "project_path": str(project),
-            "coordinate_system": self.scene.coordinate_system,
-            "webots_version": {"major": version.split()[0], "revision": "0"},
-            "webots_home": "", "os": "linux", "id": self._next_id,
-            # made only for a template that uses it (a folder per run)
-            "temporary_files_path": temporary_files_path() if "temporary_files_path" in (model.syntax.template or "")
-            else "",
-        }
+        context = template_context(model, self.world_path, self.scene, self._next_id)
+        return render_body(model, fields, node, context, self.result.console)
 
 
 _FAILED = object()
-_RENDERED: dict[tuple[Any, ...], str] = {}
-_FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
-
-
-@lru_cache(maxsize=256)
-def _fields_read(template: str) -> frozenset[str]:
-    return frozenset(_FIELD_NAMES.findall(template))
-
 
 def _one_element(value: Any, mf_type: str) -> Any:
     if mf_type in ("MFString", "MFBool", "MFNode"):
