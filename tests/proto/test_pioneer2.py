@@ -69,6 +69,12 @@ def test_devices_in_webots_order_and_a_kinematic_drive(tmp_path: Path) -> None:
     assert robot.drive.radius == pytest.approx(0.0825)
 
 
+def _wheel_angle(speed: float, steps: int, ts: float = 0.016) -> float:
+    """A wheel's turn in `steps` steps from rest under Webots' kinematic motor rule: without Physics the
+    default motor (10 N·m) speeds up at 10 rad/s² (its torque read as an acceleration) to `speed`."""
+    return sum(min(10.0 * ts * k, speed) for k in range(1, steps + 1)) * ts
+
+
 def _run(result, left: float, right: float, seconds: float) -> Simulation:
     sim = Simulation(result, noise=False)
     robot = sim.robots[0]
@@ -87,11 +93,11 @@ def test_it_drives_straight_and_turns_on_the_spot(tmp_path: Path) -> None:
     body = result.model.body(result.table.robots[0].body).id
     sim = _run(result, 2.0, 2.0, 1.0)
     x, y, _ = sim.data.xpos[body]
-    assert x == pytest.approx(2.0 * 0.0825 * 1.0, abs=0.004) and abs(y) < 1e-6
+    assert x == pytest.approx(_wheel_angle(2.0, 62) * 0.0825, abs=1e-9) and abs(y) < 1e-6
     result = compiled(tmp_path, wall_x=5.0)  # afresh: the kinematic drive moves the model's root body
     sim = _run(result, -1.0, 1.0, 1.0)
     heading = math.atan2(sim.data.xmat[body][3], sim.data.xmat[body][0])
-    assert heading == pytest.approx(2 * 1.0 * 0.0825 / (2 * 0.1603), abs=0.02)  # 0.51 rad to the left
+    assert heading == pytest.approx(2 * _wheel_angle(1.0, 62) * 0.0825 / (2 * 0.1603), abs=1e-6)  # 0.49 rad left
     assert np.linalg.norm(sim.data.xpos[body][:2]) < 1e-3
 
 

@@ -7,6 +7,10 @@ holds it, but a joint without one would swing under gravity. Each such joint is 
 its endPoint was written at (its `ref`, Webots' `position`) by a MuJoCo joint equality (which holds
 the joint's offset from its qpos0 = ref at zero).
 
+A joint of such a tree that a motor drives is held the same way under `KINEMATIC_PREFIX`: Webots
+moves it by its motor's kinematic rule (`wbtc.runtime.kinematic_motors`), not by a force, and the
+runtime moves the equality's target with it.
+
 Only trees that hang from the world without a free joint and whose bodies are all massless or
 `KINEMATIC_MASS` count (a robot or object without any Physics, such as Webots' Pedestrian).
 An equality is soft (a slider along z sags 0.3 mm under gravity), so the runtime also puts each
@@ -21,6 +25,8 @@ from wbtc.compile.context import KINEMATIC_MASS
 
 #: Name prefix of the holding equalities (wbtc.runtime.still_joints puts the joints back exactly).
 PREFIX = "wbtc-still:"
+#: Name prefix of the equalities of motor-driven joints in such trees (moved kinematically).
+KINEMATIC_PREFIX = "wbtc-kinematic:"
 _MOVING = (int(mujoco.mjtJoint.mjJNT_HINGE), int(mujoco.mjtJoint.mjJNT_SLIDE))
 
 
@@ -32,7 +38,7 @@ def _subtree(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
 
 
 def hold_still_joints(spec: mujoco.MjSpec) -> None:
-    """Pin every motorless hinge or slider of a physics-free tree at its written position."""
+    """Pin every hinge or slider of a physics-free tree at its written position (a motor moves its own)."""
     driven = {a.target for a in spec.actuators}
     for top in spec.worldbody.bodies:
         bodies = _subtree(top)
@@ -42,10 +48,11 @@ def hold_still_joints(spec: mujoco.MjSpec) -> None:
             continue
         for body in bodies:
             for joint in body.joints:
-                if int(joint.type) not in _MOVING or joint.name in driven:
+                if int(joint.type) not in _MOVING:
                     continue
                 hold = spec.add_equality()
-                hold.name = PREFIX + joint.name  # the runtime finds the held joints by this name
+                # The runtime finds the held joints by this name (a motor's joint is moved by its motor).
+                hold.name = (KINEMATIC_PREFIX if joint.name in driven else PREFIX) + joint.name
                 hold.type = mujoco.mjtEq.mjEQ_JOINT
                 hold.objtype = mujoco.mjtObj.mjOBJ_JOINT
                 hold.name1 = joint.name  # MuJoCo holds q - qpos0 (qpos0 = ref) at data[0] = 0

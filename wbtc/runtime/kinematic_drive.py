@@ -1,12 +1,12 @@
 """Robots without Physics that Webots drives by kinematics: two wheel motors slide them over the ground.
 
 Every basic step, before the physics, the robot's root body (static in MuJoCo: it has no joint) is
-moved by the wheels' velocities, those the motors ask for this step (`Motor.command`, ramped by
-their `acceleration`), times the wheel radius: the midpoint of the wheels (their bodies' origins)
-moves along the travel direction at their mean speed and the robot turns about the vertical at
-(right - left) / axle, integrated at the step's midpoint as WbKinematicDifferentialWheels does.
-Which wheel is left is read from the model: a wheel's travel direction is its axis × up, and the
-turn follows from where the wheels are.
+moved by the wheels' velocities, the motors' current velocities this step (`Motor.current_velocity`:
+Webots' kinematic rule, ramped by their `acceleration`), times the wheel radius: the midpoint of the
+wheels (their bodies' origins) moves along the travel direction at their mean speed and the robot
+turns about the vertical at (right - left) / axle, integrated at the step's midpoint as
+WbKinematicDifferentialWheels does. Which wheel is left is read from the model: a wheel's travel
+direction is its axis × up, and the turn follows from where the wheels are.
 
 After the move, the robot's collision geoms are pushed out of the static ones they went into, by the
 mean of the horizontal parts of the penetrations (Webots' kinematic displacement): the robot stops at
@@ -51,7 +51,7 @@ class DriveState:
     def move(self, ts: float) -> None:
         """Slide the robot by one step of its wheels' speeds."""
         model, data = self.sim.model, self.sim.data
-        rates = np.array([m.command for m in self.motors])
+        rates = np.array([m.current_velocity() for m in self.motors])
         noise = self.spec.slip_noise
         if noise and self.sim.noise_rng is not None:
             rates *= 1.0 - noise + self.sim.noise_rng.random(2) * 2.0 * noise

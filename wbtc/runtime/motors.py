@@ -19,8 +19,7 @@ The joint's damping (`dampingConstant`, brakes) does not slow a motor below its 
 available torque allows, as with ODE's motor (`_damping_lead`). Coupled motors (`multiplier`) are
 relayed by the controller library.
 
-Not honoured yet: kinematic joints (Solids without Physics are given a small mass and driven like
-the others).
+Joints of trees without any Physics move by Webots' kinematic rule instead (`kinematic_motors`).
 """
 
 from __future__ import annotations
@@ -32,6 +31,7 @@ from typing import Any
 import mujoco
 
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime import kinematic_motors
 
 
 class Motor:
@@ -45,6 +45,7 @@ class Motor:
         self.dof_adr = int(model.jnt_dofadr[joint])
         self.kv = float(model.actuator_gainprm[self.actuator, 0])
         self.gain = self.kv
+        self._kinematic: tuple[mujoco.MjModel | None, int] = (None, -1)  # (model, its holding equality)
 
     def _setup(self, entry: DeviceEntry, robot_name: str) -> None:
         """The Webots motor's own state, from its fields (whatever drives it in MuJoCo)."""
@@ -65,6 +66,7 @@ class Motor:
         self.integral = 0.0
         self.prev_error = 0.0
         self.command = 0.0
+        self.kinematic_velocity = 0.0  # Webots' current velocity of a kinematic joint (see kinematic_motors)
         self.feedback_period = 0  # torque/force feedback sampling period, ms (0: disabled)
         self.feedback_due = math.inf
         self.feedback_value: float | None = None  # sampled since the last reply, else None
@@ -106,6 +108,11 @@ class Motor:
 
     def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
         """Set the actuator for the next basic time step (`ts` seconds)."""
+        if self._kinematic[0] is not model:  # looked up once per model (a recompile makes another)
+            self._kinematic = (model, kinematic_motors.holding_equality(model, self.entry.joint))
+        if self._kinematic[1] >= 0:
+            kinematic_motors.move(self, model, data, ts, self._kinematic[1])
+            return
         a = self.actuator
         if self.torque is not None:
             # Force control: a plain motor (gain 1, no velocity feedback), as ODE's constant force.
@@ -129,6 +136,10 @@ class Motor:
             model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
             self._written = (model, self.gain)
         ctrl[a] = wanted + self._damping_lead(float(damping[self.dof_adr]), velocity, wanted)
+
+    def current_velocity(self) -> float:
+        """Webots' current velocity of the motor: the ramped command, or the kinematic joint's speed."""
+        return self.kinematic_velocity if self._kinematic[1] >= 0 else self.command
 
     def _damping_lead(self, damping: float, velocity: float, wanted: float) -> float:
         """How far past `wanted` to aim so that the joint's damping does not slow the servo down.

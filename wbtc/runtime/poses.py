@@ -194,6 +194,7 @@ def reset_physics(sim: Simulation, node: Node | None) -> None:
             dof = getattr(motor, "dof_adr", None)
             if dof is not None and hasattr(motor, "command") and descends(model, int(model.dof_bodyid[dof]), body):
                 motor.command = 0.0
+                motor.kinematic_velocity = 0.0  # WbMotor::resetPhysics: a kinematic joint starts from rest
     mujoco.mj_forward(model, data)  # so that velocity queries before the next step see it
 
 

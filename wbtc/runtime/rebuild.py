@@ -29,7 +29,7 @@ from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.runtime.surface import SurfaceColours
 
 _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "available", "torque", "integral",
-                "prev_error", "command", "feedback_period", "feedback_due", "feedback_value")
+                "prev_error", "command", "kinematic_velocity", "feedback_period", "feedback_due", "feedback_value")
 # `period` before `image_period`: a Camera's period is a property over its image and recognition periods.
 _SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due",
                  "segmentation_enabled")

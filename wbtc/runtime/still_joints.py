@@ -5,7 +5,8 @@ MuJoCo joint equality named `PREFIX + joint`. An equality is a soft constraint (
 gravity sags by about 0.3 mm), while Webots does not move such a joint at all: its position only
 changes when a supervisor writes it. So every step records these joints' positions before the
 physics runs and writes them back, with zero velocity, after it; a supervisor's write between steps
-is what the next step keeps.
+is what the next step keeps. Motor-driven joints of such trees (`KINEMATIC_PREFIX`) are kept the
+same way, at the position their motor moved them to before the step (`wbtc.runtime.kinematic_motors`).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wbtc.compile.still_joints import PREFIX
+from wbtc.compile.still_joints import KINEMATIC_PREFIX, PREFIX
 
 
 class StillJoints:
@@ -25,7 +26,8 @@ class StillJoints:
         qpos, dofs = [], []
         for index in range(model.neq):
             name = model.eq(index).name
-            if int(model.eq_type[index]) != int(mujoco.mjtEq.mjEQ_JOINT) or not name.startswith(PREFIX):
+            held = name.startswith((PREFIX, KINEMATIC_PREFIX))
+            if int(model.eq_type[index]) != int(mujoco.mjtEq.mjEQ_JOINT) or not held:
                 continue
             joint = int(model.eq_obj1id[index])
             qpos.append(int(model.jnt_qposadr[joint]))
