@@ -122,6 +122,8 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     if kind in ("VacuumGripper", "Connector"):
         entry.weld = _gripper_weld(body, ctx)
         entry.legacy_axes = ctx.legacy_axes(node)
+    if kind == "Pen":  # a pre-R2022a pen wrote along its -y axis, a later one along -z (runtime.pen)
+        entry.legacy_axes = ctx.legacy_axes(node)
     robot.devices.append(entry)
     return entry
 

@@ -2,7 +2,8 @@
 
 Maps Box, Sphere, Cylinder, Capsule, Cone (a convex mesh: MuJoCo has no cone), Plane (an
 infinite half-space when it collides), IndexedFaceSet and Mesh (mesh geoms; MuJoCo collides with
-their convex hull) and ElevationGrid (a height field).
+their convex hull) and ElevationGrid (a height field). In a world with a Pen, a textured Shape's
+primitive is drawn as a mesh addressing its paint layer instead (`primitive_uv`, `paintable`).
 
 Not honoured yet: Cylinder/Cone `side`, `top`, `bottom` (always closed), `subdivision` of
 primitives (MuJoCo draws its own), Sphere `ico`, Plane `size` for collisions (Webots' plane is
@@ -17,9 +18,10 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wbtc.compile import faceset, heightfield, meshes, texture_clamp, textures
+from wbtc.compile import faceset, heightfield, meshes, primitive_uv, texture_clamp, textures
 from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP, CompileContext, info
 from wbtc.compile.frames import LEGACY_PRIMITIVE_QUAT, Frame, quat_mul, quat_to_mat
+from wbtc.compile.mesh_data import MeshData
 from wbtc.compile.mesh_mass import mesh_volume_and_inertia
 from wbtc.scene.model import Node
 
@@ -55,7 +57,8 @@ class GeomSpec:
 def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileContext, *, collision: bool,
                  rgba: np.ndarray | None = None, material: str | None = None, name: str | None = None,
                  texture_transform: Node | None = None,
-                 texture_clamp: texture_clamp.Clamp | None = None) -> tuple[mujoco.MjsGeom, MassProps | None] | None:
+                 texture_clamp: texture_clamp.Clamp | None = None,
+                 painted: primitive_uv.Painted | None = None) -> tuple[mujoco.MjsGeom, MassProps | None] | None:
     """Add the geom of one geometry node to `body`.
 
     Args:
@@ -69,6 +72,8 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
         name: the geom's name, if it needs one.
         texture_transform: the Shape's TextureTransform: a mesh's texture coordinates carry it.
         texture_clamp: the texture's axes whose repeat is FALSE: a mesh clamps its coordinates there.
+        painted: a Pen may paint this primitive: it becomes this mesh, whose texture coordinates address
+            its paint layer (`primitive_uv`), so that the runtime can find where it paints.
 
     Returns:
         The geom and, for collision geoms, its unit-density mass properties; None when the node
@@ -76,7 +81,7 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
     """
     ctx.unhonoured(node, _UNHONOURED)
     geom_spec = _geom_spec(node, frame, ctx, textured=material is not None, transform=texture_transform,
-                           clamp=texture_clamp)
+                           clamp=texture_clamp, painted=painted)
     if geom_spec is None:
         return None
     geom = body.add_geom()
@@ -112,13 +117,16 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
 
 
 def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
-               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec | None:
+               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None,
+               painted: primitive_uv.Painted | None = None) -> GeomSpec | None:
     kind = node.base_type
     scale = np.abs(frame.scale)
     if kind in _LEGACY_AXIS_TYPES and ctx.legacy_axes(node):
         # Before R2022a these primitives had their axis (or normal) along local y.
         frame = Frame(frame.pos, quat_mul(frame.quat, LEGACY_PRIMITIVE_QUAT), frame.scale[[0, 2, 1]])
         scale = np.abs(frame.scale)
+    if painted is not None:  # the layer's coordinates are final: no TextureTransform, no clamp
+        return _mesh_data(node, painted.mesh, frame, ctx, textured)
     if kind == "Box":
         half = np.abs(np.asarray(node.get("size"), dtype=float)) * scale / 2  # Webots: full edges
         half = np.maximum(half, 1e-6)
@@ -193,6 +201,12 @@ def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         if node.base_type == "Mesh":
             ctx.warn("the Mesh's file cannot be read; it is left out", node.span)
         return None
+    return _mesh_data(node, data, frame, ctx, textured, transform, clamp)
+
+
+def _mesh_data(node: Node, data: MeshData, frame: Frame, ctx: CompileContext, textured: bool,
+               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec:
+    """The mesh geom of a triangle mesh made from `node` (scaled by the frame's scale)."""
     vertices, faces, moved = np.asarray(data.vertices, dtype=float), np.asarray(data.faces), None
     if textured and data.texcoords is not None:
         # Webots transforms the coordinates with t upwards, then flips t into the image's rows (as

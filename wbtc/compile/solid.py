@@ -29,7 +29,19 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-from wbtc.compile import appearance, damping, device, geometry, joint, legacy_protos, light, propeller, textures, track
+from wbtc.compile import (
+    appearance,
+    damping,
+    device,
+    geometry,
+    joint,
+    legacy_protos,
+    light,
+    paintable,
+    propeller,
+    textures,
+    track,
+)
 from wbtc.compile.bodyless import make_kinematic
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat
@@ -143,12 +155,18 @@ class BodyBuilder:
         rgba, material, path = appearance.shape_look(shape, self.ctx)
         look = shape.get("appearance")
         transform = look.get("textureTransform") if isinstance(look, Node) else None
+        # In a world with a Pen, a textured shape gets a texture of its own and Webots' mapping (paintable).
+        own = paintable.prepare(self.ctx, shape, material, path) \
+            if path is not None and material is not None and paintable.enabled(self.ctx) else None
         made = geometry.add_geometry(body, geom_node, frame, self.ctx, collision=False, rgba=rgba,
-                                     material=material, name=name,
+                                     material=own.material if own else material, name=name,
                                      texture_transform=transform if isinstance(transform, Node) else None,
-                                     texture_clamp=_texture_clamp(look, path))
+                                     texture_clamp=_texture_clamp(look, path),
+                                     painted=own.painted if own else None)
         if made is None:
             return []
+        if own is not None:
+            paintable.register(self.ctx, made[0], own, shape)
         return [made[0].name] if made[0].name else []
 
     def add_solid(self, node: Node, parent: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,

@@ -42,7 +42,8 @@ class DeviceEntry:
         textures: for a Display, the MuJoCo textures that show its image.
         weld: for a VacuumGripper or a Connector, its (inactive) weld equality, which the runtime points at
             what it holds or docks to.
-        legacy_axes: the device was written before R2022a (a Connector docked along its z axis then).
+        legacy_axes: the device was written before R2022a (a Connector docked along its z axis then, a
+            Pen wrote along its -y axis).
         track: for a device in a Track's `device` field, the Track's body (it acts on no joint).
     """
 
@@ -163,6 +164,10 @@ class DeviceTable:
         light_boost: by light name, what its capped diffuse is multiplied by in cameras (the model
             caps DirectionalLights at 1 for MuJoCo's untone-mapped viewer).
         tracks: the robots' Tracks (`wbtc.compile.track.TrackEntry`): belts the runtime moves.
+        paintable: in a world with a Pen, each textured visual geom (by name): the texture of its own that
+            pens paint on, Webots' stroke scale (texels per metre of leadSize) and the texture's texels per
+            texel of Webots' paint layer (see `wbtc.compile.paintable`).
+        ink_evaporation: WorldInfo.inkEvaporation: how fast pens' ink fades (1/s; 0: never).
     """
 
     robots: list[RobotEntry] = field(default_factory=list)
@@ -189,6 +194,8 @@ class DeviceTable:
     # (asymmetric ContactLaws, their geoms' materials by geom name): see wbtc.compile.contact.
     asymmetric_friction: tuple[list[Any], dict[str, str]] | None = None
     tracks: list[Any] = field(default_factory=list)
+    paintable: dict[str, tuple[str, float, float]] = field(default_factory=dict)
+    ink_evaporation: float = 0.0
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""

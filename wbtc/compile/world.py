@@ -19,7 +19,7 @@
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
 
 Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
-single-threaded), `physicsDisable*`, `inkEvaporation`, `lineScale`; ContactProperties `bounce`,
+single-threaded), `physicsDisable*`, `lineScale`; ContactProperties `bounce`,
 `bounceVelocity`, `forceDependentSlip`, `softERP`, `softCFM`; Fog; Background textures (a plain sky colour is used).
 """
 
@@ -38,7 +38,7 @@ from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
-_UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics", "inkEvaporation"})
+_UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics"})
 _UNHONOURED_CONTACT = frozenset({"bounce", "bounceVelocity", "forceDependentSlip", "softERP", "softCFM"})
 #: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
 INFINITE_FRICTION = 100.0
@@ -66,6 +66,7 @@ def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
         table.random_seed = int(info_node.get("randomSeed"))
         table.gps_reference = [float(v) for v in info_node.get("gpsReference")]
         table.gps_wgs84 = str(info_node.get("gpsCoordinateSystem")) == "WGS84"
+        table.ink_evaporation = max(float(info_node.get("inkEvaporation") or 0.0), 0.0)  # pens' ink fades (runtime.pen)
         damping = info_node.get("defaultDamping")
         ctx.default_damping = damping if isinstance(damping, Node) else None
     step = step if step > 0 else 32.0

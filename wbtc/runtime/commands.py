@@ -88,6 +88,8 @@ def apply_commands(sim: Simulation, robot: RobotState, commands: list[tuple],
                 sensor.command(op, args)
         elif tag in robot.displays:
             robot.displays[tag].command(op, args, robot)
+        elif tag in robot.pens:
+            robot.pens[tag].command(op, args)
         elif tag in robot.leds:
             if op == "set":
                 robot.leds[tag].set(int(args[0]), sim.model)

@@ -39,6 +39,29 @@ from wbtc.runtime import tone
 _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
 
 
+#: Textures pens paint on (`wbtc.compile.paintable`): sampled without mipmaps (see `_without_mipmaps`).
+PAINT_TEXTURE_PREFIX = "paint_"
+
+
+def _without_mipmaps(context: mujoco.MjrContext, tex: int) -> None:
+    """Sample texture `tex` texel by texel: nearest texel, no mipmaps.
+
+    Webots samples a pen's paint layer so (no interpolation, no mipmaps), and its pen tests count the
+    inked pixels: at most 20 for a 6 mm stroke seen from 30 cm on a 256-texel face, where MuJoCo's
+    mipmaps smear the same stroke over 38. Here the image and the ink are one texture, so the image
+    is sampled so too. Needs PyOpenGL (a dependency of MuJoCo's Python package); without it the ink
+    is drawn mipmapped.
+    """
+    try:
+        from OpenGL import GL  # imported here: a run without cameras never loads OpenGL
+
+        GL.glBindTexture(GL.GL_TEXTURE_2D, int(context.texture[tex]))
+        GL.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_NEAREST)
+        GL.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_NEAREST)
+    except Exception:  # noqa: BLE001 - any PyOpenGL or platform failure only costs the ink's sharpness
+        pass
+
+
 #: The laser spot as Webots' cameras show it: an emissive red that reads 0xEF after their tone mapping.
 _SPOT_RGBA = np.array([tone.inverse(239) / 255, 0.0, 0.0, 1.0], dtype=np.float32)
 
@@ -138,6 +161,8 @@ class Offscreen:
             mujoco.mjr_uploadTexture(model, self.context, tex)
         finally:
             block[...] = saved
+        if model.texture(tex).name.startswith(PAINT_TEXTURE_PREFIX):
+            _without_mipmaps(self.context, tex)
 
     def depth(self, data: mujoco.MjData, camera: int, near: float, far: float) -> np.ndarray:
         """Render model camera `camera` and read its depth: metres to the image plane, rows from the bottom.

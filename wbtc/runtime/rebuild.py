@@ -61,6 +61,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
     sim.rays = RayCaster(model, data)
     sim.surface = SurfaceColours(model, result.table.infrared)
     sim.texture_versions = {}  # the new model's textures are as compiled; displays write theirs again
+    sim.canvases = {}  # and pens' ink is gone with the old model's textures
     mujoco.mj_forward(model, data)
     by_node = {id(robot.entry.node): robot for robot in old_robots}
     by_robot_name = {robot.entry.name: robot for robot in old_robots} if by_name else {}
@@ -133,6 +134,10 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
             display.raster, display.images = before_display.raster, before_display.images
             display.font_size, display.camera_tag = before_display.font_size, before_display.camera_tag
             display.changed = True  # show the drawing on the new model's textures
+    for tag, pen in new.pens.items():  # a pen keeps its ink and whether it writes
+        before_pen = old.pens.get(tag)
+        if before_pen is not None:
+            pen.write, pen.colour, pen.density = before_pen.write, before_pen.colour, before_pen.density
     for tag, emitter in new.emitters.items():
         before_emitter = old.emitters.get(tag)
         if isinstance(before_emitter, Emitter):

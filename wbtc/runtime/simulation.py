@@ -29,6 +29,7 @@ from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.offscreen import Offscreen
+from wbtc.runtime.pen import Pen, evaporate
 from wbtc.runtime.propeller import PropellerMotor
 from wbtc.runtime.radar import Radar
 from wbtc.runtime.range_finder import RangeFinder
@@ -53,6 +54,7 @@ class RobotState:
     emitters: dict[int, Emitter] = field(default_factory=dict)
     displays: dict[int, Display] = field(default_factory=dict)
     grippers: dict[int, VacuumGripper] = field(default_factory=dict)
+    pens: dict[int, Pen] = field(default_factory=dict)
     keyboard_period: int = 0
     keyboard_due: float = math.inf
     keys: list[int] | None = None
@@ -88,6 +90,7 @@ class Simulation:
         self.rays = RayCaster(self.model, self.data)
         self.surface = SurfaceColours(self.model, self.table.infrared)  # what infra-red rays see where they land
         self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
+        self.canvases: dict[int, np.ndarray] = {}  # textures pens painted: tex id -> linear colours (runtime.pen)
         self.invisible: dict[int, set[int]] = {}  # geoms a camera does not draw (Node.setVisibility): cam -> geoms
         self.hidden: dict[tuple[int, int], tuple[Any, Any]] = {}  # (node, viewer) pairs behind `invisible`
         self.keys_down: list[int] = []
@@ -214,6 +217,8 @@ class Simulation:
             state.sensors[tag] = state.grippers[tag] = VacuumGripper(dev, self, state.bodies)
         elif dev.type == "Display":
             state.displays[tag] = Display(dev, self.model)
+        elif dev.type == "Pen":
+            state.pens[tag] = Pen(dev, self)
         elif dev.type == "Camera" and dev.camera:
             state.sensors[tag] = Camera(dev, self, state.bodies)
         elif dev.type == "Receiver":
@@ -278,6 +283,10 @@ class Simulation:
             receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]
             deliver(self, self.packets, receivers)
             self.packets = []
+        evaporate(self)  # WorldInfo.inkEvaporation fades the ink first, as in Webots
+        for robot in self.robots:  # pens ink where the step left them, before cameras look
+            for pen in robot.pens.values():
+                pen.paint(self)
         for robot in self.robots:  # what displays drew this step is on their textures before sensors look
             for display in robot.displays.values():
                 display.show(self, robot)

@@ -1,0 +1,150 @@
+"""Port of Webots' tests/api/controllers/pen_cone: painting with a Pen on a rotated cone (the same texture on its base and its side).
+
+The pen writes one stroke, moves along its slider, writes again, twice; after each stroke the camera must see
+no more coloured (not grey) pixels than a bound, and the ink's colour at a given pixel.
+"""
+
+from controller import Robot
+from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+
+TIME_STEP = 32
+width = 128
+height = 128
+
+camera = None
+
+
+def isGray(color):
+    return color[0] == color[1] and color[1] == color[2]
+
+
+def computeNumColorPixels():
+    numColorPixels = 0
+    image = camera.getImage()
+    for y in range(height):
+        for x in range(width):
+            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+                     camera.imageGetBlue(image, width, x, y))
+            if not isGray(color):
+                numColorPixels += 1
+    return numColorPixels
+
+
+def getPixelColor(x, y):
+    image = camera.getImage()
+    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+            camera.imageGetBlue(image, width, x, y))
+
+
+robot = Robot()
+ts_setup(robot)
+numColorPixels = -1
+
+pen = robot.getDevice("pen")
+pen.setInkColor(0xFA8A0A, 1.0)
+pen.write(True)
+
+camera = robot.getDevice("camera")
+camera.enable(TIME_STEP)
+
+motor = robot.getDevice("linear motor")
+
+position_sensor = robot.getDevice("position sensor")
+position_sensor.enable(TIME_STEP)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 1) Test initial painted area location
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    numColorPixels <= 50,
+    "The number of pixels painted after the first step should be lower than 50 not %d",
+    numColorPixels)
+
+color = getPixelColor(104, 80)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 10,
+    "Pixel (104, 80) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.02
+motor.setPosition(pos)
+
+# wait until movement is complete
+i = 0
+while True:  # C's do { ... } while (fabs(pos - effectivePos) > 0.002 && i < 10)
+    robot.step(TIME_STEP)
+    effectivePos = position_sensor.getValue()
+    i += 1
+    if not (abs(pos - effectivePos) > 0.002 and i < 10):
+        break
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 2) Test second painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels < 460,
+    "The number of pixels painted after the second step should be greater than before (%d) and lower "
+    "than 460 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(80, 60)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 10,
+    "Pixel (80, 60) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.04
+motor.setPosition(pos)
+
+# wait until movement is complete
+i = 0
+while True:  # C's do { ... } while (fabs(pos - effectivePos) > 0.002 && i < 10)
+    robot.step(TIME_STEP)
+    effectivePos = position_sensor.getValue()
+    i += 1
+    if not (abs(pos - effectivePos) > 0.002 and i < 10):
+        break
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 3) Test third painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels < 520,
+    "The number of pixels painted after the third step should be greater than before (%d) and lower than "
+    "520 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(19, 51)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 10,
+    "Pixel (19, 51) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",
+    206, 171, 58, *color)
+
+ts_send_success()

@@ -1,0 +1,152 @@
+"""Port of Webots' tests/api/controllers/pen_elevation_grid_scaled: painting with a Pen on a rotated and scaled elevation grid.
+
+The pen writes one stroke, moves along its slider, writes again, twice; after each stroke the camera must see
+no more coloured (not grey) pixels than a bound, and the ink's colour at a given pixel.
+"""
+
+from controller import Robot
+from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+
+TIME_STEP = 32
+width = 64
+height = 64
+
+camera = None
+
+
+def isGray(color):
+    return color[0] == color[1] and color[1] == color[2]
+
+
+def computeNumColorPixels():
+    numColorPixels = 0
+    image = camera.getImage()
+    for y in range(height):
+        for x in range(width):
+            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+                     camera.imageGetBlue(image, width, x, y))
+            if not isGray(color):
+                numColorPixels += 1
+    return numColorPixels
+
+
+def getPixelColor(x, y):
+    image = camera.getImage()
+    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+            camera.imageGetBlue(image, width, x, y))
+
+
+robot = Robot()
+ts_setup(robot)
+numColorPixels = -1
+
+pen = robot.getDevice("pen")
+pen.setInkColor(0xFA8A0A, 1.0)
+pen.write(True)
+
+camera = robot.getDevice("camera")
+camera.enable(TIME_STEP)
+
+motor = robot.getDevice("linear motor")
+
+position_sensor = robot.getDevice("position sensor")
+position_sensor.enable(TIME_STEP)
+
+robot.step(TIME_STEP)
+robot.step(TIME_STEP)
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 1) Test initial painted area location
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    numColorPixels <= 30,
+    "The number of pixels painted after the first step should be lower than 30 not %d",
+    numColorPixels)
+
+color = getPixelColor(8, 8)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 15,
+    "Pixel (8, 8) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.04
+motor.setPosition(pos)
+
+# wait until movement is complete
+i = 0
+while True:  # C's do { ... } while (fabs(pos - effectivePos) > 0.002 && i < 10)
+    robot.step(TIME_STEP)
+    effectivePos = position_sensor.getValue()
+    i += 1
+    if not (abs(pos - effectivePos) > 0.002 and i < 10):
+        break
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 2) Test second painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels <= 60,
+    "The number of pixels painted after the second step should be greater than before (%d) and lower "
+    "than 60 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(22, 20)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 15,
+    "Pixel (22, 20) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.08
+motor.setPosition(pos)
+
+# wait until movement is complete
+i = 0
+while True:  # C's do { ... } while (fabs(pos - effectivePos) > 0.002 && i < 10)
+    robot.step(TIME_STEP)
+    effectivePos = position_sensor.getValue()
+    i += 1
+    if not (abs(pos - effectivePos) > 0.002 and i < 10):
+        break
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 3) Test third painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels <= 120,
+    "The number of pixels painted after the third step should be greater than before (%d) and lower than "
+    "120 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(49, 42)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 15,
+    "Pixel (49, 42) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",
+    206, 171, 58, *color)
+
+ts_send_success()

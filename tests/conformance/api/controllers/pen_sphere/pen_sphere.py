@@ -1,0 +1,132 @@
+"""Port of Webots' tests/api/controllers/pen_sphere: painting with a Pen on a sphere.
+
+The pen writes one stroke, moves along its slider, writes again, twice; after each stroke the camera must see
+no more coloured (not grey) pixels than a bound, and the ink's colour at a given pixel.
+"""
+
+from controller import Robot
+from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+
+TIME_STEP = 32
+width = 64
+height = 64
+
+camera = None
+
+
+def isGray(color):
+    return color[0] == color[1] and color[1] == color[2]
+
+
+def computeNumColorPixels():
+    numColorPixels = 0
+    image = camera.getImage()
+    for y in range(height):
+        for x in range(width):
+            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+                     camera.imageGetBlue(image, width, x, y))
+            if not isGray(color):
+                numColorPixels += 1
+    return numColorPixels
+
+
+def getPixelColor(x, y):
+    image = camera.getImage()
+    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
+            camera.imageGetBlue(image, width, x, y))
+
+
+robot = Robot()
+ts_setup(robot)
+numColorPixels = -1
+
+pen = robot.getDevice("pen")
+pen.setInkColor(0xFA8A0A, 1.0)
+pen.write(True)
+
+camera = robot.getDevice("camera")
+camera.enable(TIME_STEP)
+
+motor = robot.getDevice("linear motor")
+
+position_sensor = robot.getDevice("position sensor")
+position_sensor.enable(TIME_STEP)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 1) Test initial painted area location
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    numColorPixels <= 50,
+    "The number of pixels painted after the first step should be lower than 50 not %d",
+    numColorPixels)
+
+color = getPixelColor(10, 48)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 22,
+    "Pixel (10, 48) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.02
+motor.setPosition(pos)
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 2) Test second painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels <= 100,
+    "The number of pixels painted after the second step should be greater than before (%d) and lower "
+    "than 100 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(28, 28)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 15,
+    "Pixel (28, 28) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
+    206, 171, 58, *color)
+
+robot.step(TIME_STEP)
+
+# move pen
+pos = position_sensor.getValue()
+pos = pos + 0.02
+motor.setPosition(pos)
+
+robot.step(TIME_STEP)
+# print
+pen.write(True)
+
+robot.step(TIME_STEP)
+pen.write(False)
+
+# 3) Test third painted area location
+oldValue = numColorPixels
+numColorPixels = computeNumColorPixels()
+
+ts_assert_boolean_equal(
+    oldValue <= numColorPixels and numColorPixels <= 170,
+    "The number of pixels painted after the third step should be greater than before (%d) and lower than "
+    "170 not %d",
+    oldValue, numColorPixels)
+
+color = getPixelColor(36, 14)
+ts_assert_color_in_delta(
+    *color, 206, 171, 58, 15,
+    "Pixel (36, 14) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",
+    206, 171, 58, *color)
+
+ts_send_success()

@@ -1,0 +1,184 @@
+"""Shapes a Pen can paint: each gets a texture and material of its own, and a mesh with Webots' mapping.
+
+Webots paints ink on the Shape a pen's ray meets, when that Shape shows an ImageTexture (an
+Appearance's `texture` or a PBRAppearance's `baseColorMap`); the ink stays on that shape, not on
+the image file other shapes share. So, in a world that has at least one Pen, every textured visual
+Shape is compiled with:
+
+- a MuJoCo texture of its own, Webots' paint layer with the image drawn in (`primitive_uv`: a Box's
+  faces each get their own part of it), which the runtime (`runtime.pen`) writes ink into;
+- a material of its own showing that texture (a copy of the appearance's, without a repeat: the
+  TextureTransform's scale is carried by the mesh's texture coordinates instead);
+- a mesh geom, primitives included (`primitive_uv`), whose texture coordinates address the layer:
+  the runtime finds the texture coordinate of the point it paints from the mesh's triangles.
+
+The DeviceTable's `paintable` names each such geom's texture, how many texels of Webots' layer a
+metre of lead covers, and the texture's texels per texel of Webots' layer. Worlds without a Pen compile as before.
+
+Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); an
+IndexedFaceSet without `texCoord` is painted through the default mapping its texture shows, on a
+layer of the image's size (Webots paints it through a non-repeating mapping on a layer 4 x 2 times
+the image's size, so its strokes cover fewer texels); cameras sample the whole texture texel by texel
+(`offscreen`), where Webots filters the image and samples only the ink so.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+
+from wbtc.compile import primitive_uv, textures
+from wbtc.compile.context import CompileContext
+from wbtc.scene.model import Node
+
+#: The attributes a copied material keeps.
+_MATERIAL_FIELDS = ("rgba", "emission", "specular", "shininess", "reflectance", "metallic", "roughness",
+                    "texuniform", "info")
+#: Longest side of a paint layer, texels.
+_MAX_LAYER = 4096
+
+
+def enabled(ctx: CompileContext) -> bool:
+    """Whether the world has a Pen (then textured shapes are compiled paintable); found once per compile."""
+    if ctx.paint is None:
+        ctx.paint = any(node.base_type == "Pen" for node in ctx.scene.walk())
+    return ctx.paint
+
+
+@dataclass
+class PaintSetup:
+    """What a paintable shape is compiled with.
+
+    Attributes:
+        material: its own material (a copy of the appearance's).
+        texture: its own texture, the paint layer with the image drawn in.
+        painted: a primitive's mesh and layer layout (`primitive_uv`); None for an IndexedFaceSet or a
+            Mesh, whose own texture coordinates address the layer (the image itself).
+        image_width: the image's width in pixels (Webots sizes the lead by it).
+        zoom: the layer's texels per texel of Webots' layer (more than 1 when a TextureTransform
+            repeats the image within a primitive's layer: each copy keeps its resolution).
+    """
+
+    material: str
+    texture: str
+    painted: primitive_uv.Painted | None
+    image_width: int
+    zoom: float = 1.0
+
+
+def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> PaintSetup | None:
+    """The material, texture and mesh that make a textured Shape paintable (None: it cannot be).
+
+    Args:
+        ctx: the compile context.
+        shape: the Shape.
+        material: the appearance's material (as `appearance.shape_look` made it).
+        path: the ImageTexture's file.
+
+    Returns:
+        None when the image cannot be read or the geometry is not one a pen paints (the shape then
+        keeps the shared material).
+    """
+    geometry = shape.get("geometry")
+    if not isinstance(geometry, Node):
+        return None
+    painted = None
+    if geometry.base_type in primitive_uv.MESHED_PRIMITIVES:
+        painted = primitive_uv.primitive_mesh(geometry, ctx.legacy_axes(geometry))
+        if painted is None:
+            return None
+    elif geometry.base_type not in ("IndexedFaceSet", "Mesh"):
+        return None
+    try:
+        image = textures.load_texture(path)
+    except OSError:
+        return None
+    # The texture's name starts with "paint_": cameras sample it without mipmaps (offscreen.PAINT_TEXTURE_PREFIX).
+    base = f"paint_{shape.span.line}"
+    texture = ctx.spec.add_texture(name=ctx.unique("texture", base), type=mujoco.mjtTexture.mjTEXTURE_2D)
+    pixels = np.dstack([image.rgb, image.alpha_values]) if image.alpha and image.alpha_values is not None \
+        else image.rgb
+    zoom = 1.0
+    if painted is not None:
+        look = shape.get("appearance")
+        transform = look.get("textureTransform") if isinstance(look, Node) else None
+        pixels, zoom = _layer(pixels, painted, transform if isinstance(transform, Node) else None)
+    # RGB(A) rows from the top of the image, as MuJoCo stores a PNG it reads itself.
+    texture.height, texture.width, texture.nchannel = pixels.shape
+    texture.data = np.ascontiguousarray(pixels, dtype=np.uint8).tobytes()
+    ctx.texture_paths[texture.name] = path
+    return PaintSetup(_copy_material(ctx, material, texture.name, base), texture.name, painted, image.width, zoom)
+
+
+def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | None) -> tuple[np.ndarray, float]:
+    """The paint layer of a primitive, and its texels per texel of Webots' layer.
+
+    White, with the image in each region as the shape shows it: the region's own (s, t) go through the
+    appearance's TextureTransform (which repeats, turns or moves the image) and pick the image's
+    nearest pixel. Webots' layer is the image's size times the grid; here it is as many times larger
+    again as the transform repeats the image (so that each copy keeps its pixels), 4096 texels a side
+    at most.
+    """
+    columns, rows = painted.grid
+    height, width = pixels.shape[:2]
+    repeat = 1.0
+    if transform is not None and transform.get("scale") is not None:
+        repeat = max(1.0, *(abs(float(v)) for v in transform.get("scale")))
+    out_w = max(1, min(round(width * columns * repeat), _MAX_LAYER))
+    out_h = max(1, min(round(height * rows * out_w / (width * columns)), _MAX_LAYER))
+    layer = np.full((out_h, out_w, pixels.shape[2]), 255, dtype=np.uint8)
+    for s0, t0, s1, t1 in painted.regions:
+        # (s, t) count t upwards; the layer's rows run from the top.
+        c0, c1 = round(s0 * out_w), round(s1 * out_w)
+        r0, r1 = round((1.0 - t1) * out_h), round((1.0 - t0) * out_h)
+        if c1 <= c0 or r1 <= r0:
+            continue
+        # Each texel centre's (s, t) within the region, as the part's mesh has them.
+        s = (np.arange(c1 - c0) + 0.5) / (c1 - c0)
+        t = 1.0 - (np.arange(r1 - r0) + 0.5) / (r1 - r0)
+        ss, tt = np.meshgrid(s, t)
+        moved = textures.apply_texture_transform(np.column_stack([ss.ravel(), tt.ravel()]), transform)
+        # The image repeats; its row 0 is t = 1.
+        cols = np.floor(np.mod(moved[:, 0], 1.0) * width).astype(int).clip(0, width - 1)
+        picked = np.floor(np.mod(1.0 - moved[:, 1], 1.0) * height).astype(int).clip(0, height - 1)
+        layer[r0:r1, c0:c1] = pixels[picked, cols].reshape(r1 - r0, c1 - c0, -1)
+    return layer, out_w / (width * columns)
+
+
+def _copy_material(ctx: CompileContext, material: str, texture: str, base: str) -> str:
+    """A copy of `material` showing `texture`, lit as the original."""
+    source = ctx.spec.material(material)
+    copy = ctx.spec.add_material(name=ctx.unique("material", base))
+    for name in _MATERIAL_FIELDS:
+        setattr(copy, name, getattr(source, name))
+    copy.texrepeat = [1.0, 1.0]  # a mesh's texture coordinates carry any TextureTransform
+    copy.textures[mujoco.mjtTextureRole.mjTEXROLE_RGB] = texture
+    # The run-time lighting tables are keyed by material name: the copy is lit as the original.
+    ctx.ambient_roles[copy.name] = ctx.ambient_roles.get(material)
+    if material in ctx.camera_terms:
+        ctx.camera_terms[copy.name] = ctx.camera_terms[material]
+    if material in ctx.table.infrared:
+        ctx.table.infrared[copy.name] = ctx.table.infrared[material]
+    return copy.name
+
+
+def register(ctx: CompileContext, geom: mujoco.MjsGeom, setup: PaintSetup, shape: Node) -> None:
+    """Record a paintable geom (named here if it has no name yet), its texture and its lead scale.
+
+    Webots sizes a pen's stroke in texels of the layer: leadSize x the image's width / the radius of the
+    geometry's bounding sphere (scale included). That radius is taken from the mesh's scaled vertices:
+    the farthest one from the centre of their bounding box.
+    """
+    if not geom.name:
+        geom.name = ctx.unique("geom", f"paint_{shape.span.line}")
+    mesh = ctx.spec.mesh(geom.meshname) if geom.meshname else None
+    if mesh is None:
+        return
+    vertices = np.asarray(mesh.uservert, dtype=float).reshape(-1, 3)
+    if not len(vertices):
+        return
+    centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2
+    radius = float(np.linalg.norm(vertices - centre, axis=1).max())
+    ctx.table.paintable[geom.name] = (setup.texture, setup.image_width / max(radius, 1e-9), setup.zoom)
