@@ -35,8 +35,9 @@ def test_a_display_texture_is_written_as_a_png_that_mujoco_loads(tmp_path: Path)
     written = write_mjcf(result.spec, tmp_path / "display.xml")
     pngs = [p for p in written if p.suffix == ".png"]
     assert len(pngs) == 1 and pngs[0].parent.name == "display_assets"
-    # The display's initial pixels: its ImageTexture has no image, so white, at the display's size.
-    assert np.array_equal(np.asarray(Image.open(pngs[0])), np.full((2, 4, 3), 255, dtype=np.uint8))
+    # The display's initial pixels: its ImageTexture has no image, so opaque white (RGBA: the display's
+    # alpha reaches the renderer), at the display's size.
+    assert np.array_equal(np.asarray(Image.open(pngs[0])), np.full((2, 4, 4), 255, dtype=np.uint8))
     model = mujoco.MjModel.from_xml_path(str(tmp_path / "display.xml"))
     assert (model.ntex, int(model.tex_width[0]), int(model.tex_height[0])) == (1, 4, 2)
 

@@ -165,3 +165,40 @@ def test_an_image_pasted_from_controller_bytes_keeps_its_channels(display_world)
     assert raster.pixels[1, 1].tolist() == [30, 20, 10, 255]
     assert raster.pixels[0, 0].tolist() == [0, 0, 0, 255]
     assert robot.displays[display].images[8].shape == (3, 3, 4)
+
+
+def test_texture_alpha_undoes_mujocos_double_drawing_of_blended_geoms():
+    from wbtc.runtime.display import BLEND_ALPHA, texture_alpha
+
+    stored = texture_alpha(np.array([0, 64, 128, 255], dtype=np.uint8))
+    assert stored.tolist() == [0, 35, 76, 255]
+    # MuJoCo draws a blended geom twice: a fragment of alpha a covers a(2 − a) of what is behind.
+    fragment = BLEND_ALPHA * stored / 255.0
+    assert (fragment * (2 - fragment)).tolist() == pytest.approx([0.0, 64 / 255, 128 / 255, 0.9999], abs=0.004)
+
+
+def test_a_transparent_display_pixel_shows_the_sky_behind_it(tmp_path: Path):
+    world = tmp_path / "display.wbt"
+    world.write_text(WORLD.replace("skyColor [0 0 0]", "skyColor [1 0 0]"))
+    result, _ = compile_world(world)
+    sim = Simulation(result, noise=False)
+    robot = sim.robots[0]
+    tags = {entry.name: tag for tag, entry in enumerate(robot.entry.devices)}
+    display, camera = tags["display"], tags["camera"]
+    shown = robot.displays[display]
+    assert len(shown.materials) == 1 and len(shown.geoms) == 1
+    apply_commands(sim, robot, [(camera, "enable", 16), (display, "setColor", 0x00FF00),
+                                (display, "fillRectangle", 0, 0, 8, 8)])
+    sim.step()
+    blue, green, red = robot.sensors[camera].pixels[8, 8, :3].tolist()
+    assert red == 0 and green > 100  # the opaque green display hides the red sky
+    assert sim.model.mat_rgba[shown.materials[0], 3] == 1.0  # opaque: MuJoCo does not blend it
+    apply_commands(sim, robot, [(display, "setAlpha", 0.0), (display, "fillRectangle", 0, 0, 8, 8)])
+    sim.step()
+    assert robot.sensors[camera].pixels[8, 8, :3].tolist() == [0, 0, 255]  # the sky as its own colour
+    assert sim.model.mat_rgba[shown.materials[0], 3] == pytest.approx(0.99)
+    assert sim.model.geom_rgba[shown.geoms[0], 3] == pytest.approx(0.99)
+    apply_commands(sim, robot, [(display, "setAlpha", 1.0), (display, "fillRectangle", 0, 0, 8, 8)])
+    sim.step()
+    assert robot.sensors[camera].pixels[8, 8, :3].tolist() == [blue, green, red]
+    assert sim.model.mat_rgba[shown.materials[0], 3] == 1.0 and sim.model.geom_rgba[shown.geoms[0], 3] == 1.0

@@ -5,7 +5,8 @@ Shape (an Appearance's `texture`, or a PBRAppearance's `baseColorMap` and `emiss
 those of every Shape found below it when the first child is a Group (Pose, Transform ...). Each such
 ImageTexture gets a texture of its own here, at the display's size: its own image (resampled) when
 its url can be read, else plain white, which is what the shape shows before the controller's first
-drawing. The runtime (`runtime.display`) writes the display's image into these textures.
+drawing. The runtime (`runtime.display`) writes the display's image into these textures. They are
+RGBA (opaque to start with): where the display is transparent, what is behind it shows, as in Webots.
 
 Not honoured yet: a Display's textures keep MuJoCo's repeat and filtering (Webots' `filtering` field).
 """
@@ -80,8 +81,10 @@ def display_texture(ctx: CompileContext, texture: Node, path: str | None) -> str
         return name
     width, height = max(int(entry.fields.get("width", 64)), 1), max(int(entry.fields.get("height", 64)), 1)
     made = ctx.spec.add_texture(name=name, type=mujoco.mjtTexture.mjTEXTURE_2D)
-    made.width, made.height, made.nchannel = width, height, 3
-    made.data = _initial_pixels(path, width, height).tobytes()
+    # Four channels: the display's alpha goes to the renderer (runtime.display turns blending on).
+    made.width, made.height, made.nchannel = width, height, 4
+    rgb = _initial_pixels(path, width, height)
+    made.data = np.concatenate([rgb, np.full((height, width, 1), 255, np.uint8)], axis=2).tobytes()
     entry.textures.append(name)
     return name
 

@@ -9,8 +9,17 @@ the textures keep their own image, as in Webots. An attached camera's latest ima
 where the display is transparent: attaching one turns the untouched opaque black pixels transparent,
 as Webots does. `imageSave` writes a PNG (or JPEG, by the file's extension) at once.
 
-Not honoured yet: the display's alpha on the textures (MuJoCo's RGB textures show the colour
-whatever its alpha, except over an attached camera); the display as an overlay in the window.
+Transparency: the textures are RGBA and carry the display's alpha, so what is behind a transparent
+pixel (the sky, another object) shows through it, as in Webots. MuJoCo's renderer blends a geom, and so
+looks at its texture's alpha, only when the geom's alpha is below 0.995 (`mjr_render`), and it then
+draws the geom twice (front to back, then back to front), so that a fragment of alpha a covers
+a(2 − a) of what is behind. While the display's image has a pixel that is not opaque, its shapes get
+alpha `BLEND_ALPHA` (opaque pixels then cover 0.9999: within a byte of Webots' colour) and the
+texture's alpha is written so that the double drawing gives the display's own alpha; an opaque image
+puts the shapes back to opaque, so that they write depth as any other shape.
+
+Not honoured yet: the display as an overlay in the window; a display shape's own transparency
+(Material `transparency`) with a transparent image: the texture's alpha is worked out for `BLEND_ALPHA`.
 """
 
 from __future__ import annotations
@@ -29,6 +38,11 @@ if TYPE_CHECKING:
 
 # Controller image formats (Display.RGB ... Display.ABGR): where R, G, B and A sit in each pixel.
 _CHANNELS = {3: (0, 1, 2, None), 4: (0, 1, 2, 3), 5: (1, 2, 3, 0), 6: (2, 1, 0, 3), 7: (3, 2, 1, 0)}
+#: A display shape's alpha while its image is transparent somewhere: just below the 0.995 at which
+#: MuJoCo's renderer starts blending a geom (and so looking at its texture's alpha).
+BLEND_ALPHA = 0.99
+#: At and above this alpha MuJoCo draws a geom opaque (render_gl3.c, `mjr_render`).
+_OPAQUE = 0.995
 
 
 class Display:
@@ -42,6 +56,12 @@ class Display:
         self.camera_tag: int | None = None
         self.changed = False
         self.textures = [model.texture(name).id for name in entry.textures]
+        # The materials showing these textures, and the geoms drawn with them (a geom's own rgba,
+        # when set, replaces its material's in MuJoCo's renderer, so both get the blending alpha).
+        role = int(mujoco.mjtTextureRole.mjTEXROLE_RGB)
+        self.materials = np.flatnonzero(np.isin(model.mat_texid[:, role], self.textures))
+        self.geoms = np.flatnonzero(np.isin(model.geom_matid, self.materials))
+        self.blending = False
 
     def command(self, op: str, args: tuple, robot: RobotState) -> None:
         """Apply one drawing command (the controller has checked its arguments)."""
@@ -129,6 +149,10 @@ class Display:
         self.changed = False
         rgba = self._with_camera(self.raster.pixels, 0, 0, robot)
         model = sim.model
+        self._blend(model, bool((rgba[..., 3] < 255).any()))
+        if self.blending:
+            rgba = rgba.copy()
+            rgba[..., 3] = texture_alpha(rgba[..., 3])
         for tex in self.textures:
             width, height = int(model.tex_width[tex]), int(model.tex_height[tex])
             channels = int(model.tex_nchannel[tex])
@@ -136,6 +160,35 @@ class Display:
             adr = int(model.tex_adr[tex])
             model.tex_data[adr:adr + width * height * channels] = image.reshape(-1)
             sim.texture_changed(tex)
+
+    def _blend(self, model: mujoco.MjModel, transparent: bool) -> None:
+        """Have MuJoCo blend the display's shapes while its image is transparent somewhere, only then.
+
+        Only opaque shapes are switched (and switched back): one made transparent by its own material
+        blends already.
+        """
+        if transparent == self.blending:
+            return
+        self.blending = transparent
+        for rgba, rows in ((model.mat_rgba, self.materials), (model.geom_rgba, self.geoms)):
+            alphas = rgba[rows, 3]  # a copy (fancy indexing), written back below
+            if transparent:
+                alphas[alphas >= _OPAQUE] = BLEND_ALPHA
+            else:
+                alphas[alphas == np.float32(BLEND_ALPHA)] = 1.0
+            rgba[rows, 3] = alphas
+
+
+def texture_alpha(alpha: np.ndarray) -> np.ndarray:
+    """The texture alpha bytes that MuJoCo's blending turns into the display's alpha bytes `alpha`.
+
+    A fragment's alpha is the shape's `BLEND_ALPHA` times the texture's, and MuJoCo's two drawings
+    cover a(2 − a) of what is behind; a(2 − a) = A gives a = 1 − √(1 − A). An opaque pixel asks for
+    more than the texture can hold and gets 255 (covering 0.9999), a transparent one 0.
+    """
+    wanted = np.asarray(alpha, dtype=float) / 255.0
+    fragment = 1.0 - np.sqrt(1.0 - wanted)
+    return np.clip(np.rint(fragment / BLEND_ALPHA * 255.0), 0, 255).astype(np.uint8)
 
 
 def _byte(value: Any) -> int:

@@ -5,7 +5,7 @@ from controller import Supervisor
 
 TIME_STEP = 64
 
-damping = [0, 20, 50]
+damping = [0.0, 20.0, 50.0]  # C's `const double damping[3]`: setSFFloat takes only a float, as in Webots' Python
 
 robot = Supervisor()
 wheel_parameters_nodes = [robot.getFromDef("WHEEL1PARAMETERS"), robot.getFromDef("WHEEL2PARAMETERS")]
