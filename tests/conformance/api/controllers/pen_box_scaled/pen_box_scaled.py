@@ -6,35 +6,11 @@ no more coloured (not grey) pixels than a bound, and the ink's colour at a given
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor
 
 TIME_STEP = 32
 width = 64
 height = 64
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
-
 
 robot = Robot()
 ts_setup(robot)
@@ -58,14 +34,14 @@ robot.step(TIME_STEP)
 pen.write(False)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     numColorPixels <= 80,
     "The number of pixels painted after the first step should be lower than 80 not %d",
     numColorPixels)
 
-color = getPixelColor(22, 56)
+color = getPixelColor(camera, width, 22, 56)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (22, 56) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
@@ -87,7 +63,7 @@ pen.write(False)
 
 # 2) Test second painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels <= 150,
@@ -95,7 +71,7 @@ ts_assert_boolean_equal(
     "than 150 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(38, 35)
+color = getPixelColor(camera, width, 38, 35)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (38, 35) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
@@ -117,7 +93,7 @@ pen.write(False)
 
 # 3) Test third painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels <= 180,
@@ -125,7 +101,7 @@ ts_assert_boolean_equal(
     "or equal to 180 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(43, 24)
+color = getPixelColor(camera, width, 43, 24)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (43, 24) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",

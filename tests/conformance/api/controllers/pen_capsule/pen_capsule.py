@@ -6,35 +6,11 @@ no more coloured (not grey) pixels than a bound, and the ink's colour at a given
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor
 
 TIME_STEP = 32
 width = 64
 height = 64
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
-
 
 robot = Robot()
 ts_setup(robot)
@@ -56,14 +32,14 @@ robot.step(TIME_STEP)
 pen.write(False)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     numColorPixels <= 40,
     "The number of pixels painted after the first step should be lower than 40 not %d",
     numColorPixels)
 
-color = getPixelColor(19, 50)
+color = getPixelColor(camera, width, 19, 50)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (19, 50) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
@@ -94,7 +70,7 @@ pen.write(False)
 
 # 2) Test second painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels <= 120,
@@ -102,7 +78,7 @@ ts_assert_boolean_equal(
     "than 120 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(36, 32)
+color = getPixelColor(camera, width, 36, 32)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (36, 32) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
@@ -133,7 +109,7 @@ pen.write(False)
 
 # 3) Test third painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels < 179,
@@ -141,7 +117,7 @@ ts_assert_boolean_equal(
     "179 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(45, 12)
+color = getPixelColor(camera, width, 45, 12)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (45, 12) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",

@@ -6,35 +6,11 @@ no more coloured (not grey) pixels than a bound, and the ink's colour at a given
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor
 
 TIME_STEP = 32
 width = 128
 height = 128
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
-
 
 robot = Robot()
 ts_setup(robot)
@@ -56,14 +32,14 @@ robot.step(TIME_STEP)
 pen.write(False)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     numColorPixels <= 50,
     "The number of pixels painted after the first step should be lower than 50 not %d",
     numColorPixels)
 
-color = getPixelColor(104, 80)
+color = getPixelColor(camera, width, 104, 80)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (104, 80) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
@@ -94,7 +70,7 @@ pen.write(False)
 
 # 2) Test second painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels < 460,
@@ -102,7 +78,7 @@ ts_assert_boolean_equal(
     "than 460 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(80, 60)
+color = getPixelColor(camera, width, 80, 60)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (80, 60) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
@@ -133,7 +109,7 @@ pen.write(False)
 
 # 3) Test third painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels < 520,
@@ -141,7 +117,7 @@ ts_assert_boolean_equal(
     "520 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(19, 51)
+color = getPixelColor(camera, width, 19, 51)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 10,
     "Pixel (19, 51) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",

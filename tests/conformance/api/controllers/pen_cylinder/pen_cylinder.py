@@ -6,35 +6,11 @@ no more coloured (not grey) pixels than a bound, and the ink's colour at a given
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor
 
 TIME_STEP = 32
 width = 64
 height = 64
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
-
 
 robot = Robot()
 ts_setup(robot)
@@ -56,14 +32,14 @@ robot.step(TIME_STEP)
 pen.write(False)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     numColorPixels < 24,
     "The number of pixels painted after the first step should be lower than 24 not %d",
     numColorPixels)
 
-color = getPixelColor(14, 55)
+color = getPixelColor(camera, width, 14, 55)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 32,
     "Pixel (14, 55) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
@@ -85,7 +61,7 @@ pen.write(False)
 
 # 2) Test second painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels < 105,
@@ -93,7 +69,7 @@ ts_assert_boolean_equal(
     "than 105 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(32, 47)
+color = getPixelColor(camera, width, 32, 47)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (32, 47) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
@@ -115,7 +91,7 @@ pen.write(False)
 
 # 3) Test third painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels < 133,
@@ -123,7 +99,7 @@ ts_assert_boolean_equal(
     "133 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(48, 34)
+color = getPixelColor(camera, width, 48, 34)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (48, 34) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",

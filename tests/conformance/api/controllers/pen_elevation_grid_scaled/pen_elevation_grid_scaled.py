@@ -6,35 +6,11 @@ no more coloured (not grey) pixels than a bound, and the ink's colour at a given
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_assert_color_in_delta, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor
 
 TIME_STEP = 32
 width = 64
 height = 64
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
-
 
 robot = Robot()
 ts_setup(robot)
@@ -58,14 +34,14 @@ robot.step(TIME_STEP)
 pen.write(False)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     numColorPixels <= 30,
     "The number of pixels painted after the first step should be lower than 30 not %d",
     numColorPixels)
 
-color = getPixelColor(8, 8)
+color = getPixelColor(camera, width, 8, 8)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (8, 8) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after first paint call",
@@ -96,7 +72,7 @@ pen.write(False)
 
 # 2) Test second painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels <= 60,
@@ -104,7 +80,7 @@ ts_assert_boolean_equal(
     "than 60 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(22, 20)
+color = getPixelColor(camera, width, 22, 20)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (22, 20) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after second paint call",
@@ -135,7 +111,7 @@ pen.write(False)
 
 # 3) Test third painted area location
 oldValue = numColorPixels
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 
 ts_assert_boolean_equal(
     oldValue <= numColorPixels and numColorPixels <= 120,
@@ -143,7 +119,7 @@ ts_assert_boolean_equal(
     "120 not %d",
     oldValue, numColorPixels)
 
-color = getPixelColor(49, 42)
+color = getPixelColor(camera, width, 49, 42)
 ts_assert_color_in_delta(
     *color, 206, 171, 58, 15,
     "Pixel (49, 42) should be painted with color [r=%d, g=%d, b=%d] not [r=%d, g=%d, b=%d] after third paint call",

@@ -6,35 +6,12 @@ and after the pen has moved 4 cm along its slider that pixel must be inked. It r
 
 from controller import Robot
 from ts_assertion import ts_assert_boolean_equal, ts_send_success, ts_setup
+from ts_pen import computeNumColorPixels, getPixelColor, isGray
 
 TIME_STEP = 32
 width = 64
 height = 64
 size = 4096
-
-camera = None
-
-
-def isGray(color):
-    return color[0] == color[1] and color[1] == color[2]
-
-
-def computeNumColorPixels():
-    numColorPixels = 0
-    image = camera.getImage()
-    for y in range(height):
-        for x in range(width):
-            color = (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-                     camera.imageGetBlue(image, width, x, y))
-            if not isGray(color):
-                numColorPixels += 1
-    return numColorPixels
-
-
-def getPixelColor(x, y):
-    image = camera.getImage()
-    return (camera.imageGetRed(image, width, x, y), camera.imageGetGreen(image, width, x, y),
-            camera.imageGetBlue(image, width, x, y))
 
 
 robot = Robot()
@@ -56,12 +33,12 @@ position_sensor.enable(TIME_STEP)
 robot.step(TIME_STEP)
 
 # 1) Test initial painted area location
-numColorPixels = computeNumColorPixels()
+numColorPixels = computeNumColorPixels(camera, width, height)
 ts_assert_boolean_equal(numColorPixels <= 20,
                         "The number of pixels painted after the first step should be lower than 20 not %d",
                         numColorPixels)
 
-color = getPixelColor(46, 26)
+color = getPixelColor(camera, width, 46, 26)
 ts_assert_boolean_equal(isGray(color), "The pixel (46,26) should be gray at first step")
 
 robot.step(TIME_STEP)
@@ -71,7 +48,7 @@ motor.setPosition(position_sensor.getValue() + 0.04)
 robot.step(5 * TIME_STEP)
 
 # 2) Test third painted area location
-color = getPixelColor(46, 26)
+color = getPixelColor(camera, width, 46, 26)
 ts_assert_boolean_equal(not isGray(color), "The pixel (46,26) should not be gray at last step")
 
 ts_send_success()
