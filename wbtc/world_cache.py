@@ -42,7 +42,7 @@ from wbtc.compile.compiler import CompileResult, compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.proto import template_files
 from wbtc.proto.expand import Expansion
-from wbtc.proto.model import proto_tags
+from wbtc.proto.model import file_stamp, proto_tags
 from wbtc.proto.resolve import project_proto_dirs
 from wbtc.resources import protos_dir
 from wbtc.scene.model import Scene
@@ -100,12 +100,8 @@ def _key(world: Path, options: CompileOptions) -> str:
 
 
 def _stamp(path: str) -> Stamp:
-    """A path's size and modification time (-1, 0 when it does not exist)."""
-    try:
-        info = os.stat(path)
-    except OSError:
-        return (path, -1, 0)
-    return (path, info.st_size, info.st_mtime_ns)
+    """A path's size and modification time (-1, 0 when it does not exist), with the path."""
+    return (path, *file_stamp(path))
 
 
 def _wbtc_stamps() -> list[Stamp]:

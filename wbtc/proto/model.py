@@ -66,7 +66,7 @@ class ProtoModel:
         return proto_tags(self.path)
 
 
-def _stamp(path: Path) -> tuple[int, int]:
+def file_stamp(path: str | Path) -> tuple[int, int]:
     """A file's size and modification time, in the keys of the caches below.
 
     So a long-lived program (a notebook running a world while its PROTOs are edited) reads a PROTO
@@ -81,7 +81,7 @@ def _stamp(path: Path) -> tuple[int, int]:
 
 def proto_tags(path: Path) -> frozenset[str]:
     """The `# tags: a, b` words of a PROTO file's leading comment lines (empty when it has none)."""
-    return _proto_tags(path, _stamp(path))
+    return _proto_tags(path, file_stamp(path))
 
 
 @lru_cache(maxsize=512)
@@ -144,7 +144,7 @@ def load_proto(path: Path) -> ProtoModel:
     Raises:
         WbtcError: the file cannot be read or is malformed.
     """
-    return _load_proto(path, _stamp(path))
+    return _load_proto(path, file_stamp(path))
 
 
 @lru_cache(maxsize=512)

@@ -138,7 +138,7 @@ def _pixels(sim: Simulation, texture: int) -> np.ndarray:
 
 def _show(sim: Simulation, texture: int, rows: np.ndarray, cols: np.ndarray, shown: np.ndarray) -> None:
     """Write texels' shown linear colours into the model's texture as sRGB bytes; renderers upload it again."""
-    _pixels(sim, texture)[rows, cols, :3] = np.rint(linear_to_srgb(shown) * 255.0).astype(np.uint8)
+    _pixels(sim, texture)[rows, cols, :3] = np.rint(tone.srgb(shown) * 255.0).astype(np.uint8)
     sim.texture_changed(texture)
 
 
@@ -201,8 +201,3 @@ class Canvas:
         cover = coverage[:, None]
         return rows, cols, self.base[rows, cols] * (1.0 - cover) + self.ink[rows, cols] * cover
 
-
-def linear_to_srgb(colour: np.ndarray) -> np.ndarray:
-    """Linear light (0-1) to sRGB levels, the inverse of `tone.linear`."""
-    c = np.clip(colour, 0.0, 1.0)
-    return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)

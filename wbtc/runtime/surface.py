@@ -28,6 +28,8 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
+from wbtc.runtime import pen_uv
+
 _RGB = mujoco.mjtTextureRole.mjTEXROLE_RGB
 # For a box hit on the face normal to axis k: the local axes that give (u, v).
 _BOX_AXES = {0: (1, 2), 1: (0, 2), 2: (0, 1)}
@@ -166,13 +168,10 @@ class SurfaceColours:
 
 def _mesh_faces(model: mujoco.MjModel, mesh: int) -> _MeshFaces | None:
     """A mesh's triangles and texture coordinates, or None when it has no texture coordinates."""
-    tc_adr, nface = int(model.mesh_texcoordadr[mesh]), int(model.mesh_facenum[mesh])
-    if tc_adr < 0 or nface == 0:
+    tris = pen_uv.triangles(model, mesh)
+    if tris is None or not len(tris.corners):
         return None
-    vert_adr, face_adr = int(model.mesh_vertadr[mesh]), int(model.mesh_faceadr[mesh])
-    faces = model.mesh_face[face_adr:face_adr + nface] + vert_adr
-    corners = model.mesh_vert[faces].astype(float)  # (F, 3, 3)
-    texcoords = model.mesh_texcoord[model.mesh_facetexcoord[face_adr:face_adr + nface] + tc_adr].astype(float)
+    corners, texcoords = tris.corners, tris.uv  # (F, 3, 3), (F, 3, 2)
     edge1, edge2 = corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0]
     cross = np.cross(edge1, edge2)
     double_area = np.linalg.norm(cross, axis=1)

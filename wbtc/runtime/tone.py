@@ -77,6 +77,12 @@ def linear(colour: np.ndarray) -> np.ndarray:
     return np.where(c <= 0.04045, c / 12.92, ((c + 0.055) / 1.055) ** 2.4)
 
 
+def srgb(colour: np.ndarray) -> np.ndarray:
+    """Linear light (0-1) as sRGB values (0-1), the inverse of `linear`."""
+    c = np.clip(colour, 0.0, 1.0)
+    return np.where(c <= 0.0031308, c * 12.92, 1.055 * c ** (1 / 2.4) - 0.055)
+
+
 def map_levels(levels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
     """Map fractional drawn levels (a blend of images) through the curve, as 8-bit values.
 
