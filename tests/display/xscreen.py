@@ -1,6 +1,7 @@
 """A real X server for tests: Xvfb, screenshots of it (xwd), windows found by title (xdotool)."""
 
 import os
+import select
 import shutil
 import struct
 import subprocess
@@ -14,22 +15,24 @@ ARTIFACTS = os.environ.get("WBTC_ARTIFACTS")
 
 
 class Xvfb:
-    """An Xvfb server on a free display number, 1280x1024, 24-bit."""
+    """An Xvfb server on a free display number (Xvfb's choice), 1280x1024, 24-bit."""
 
     def __init__(self, width: int = 1280, height: int = 1024) -> None:
         for tool in ("Xvfb", "xwd", "xdotool"):
             if shutil.which(tool) is None:
                 raise RuntimeError(f"{tool} is missing: apt-get install xvfb x11-apps xdotool (.ci/run does)")
-        self.number = next(n for n in range(90, 200) if not Path(f"/tmp/.X11-unix/X{n}").exists()
-                           and not Path(f"/tmp/.X{n}-lock").exists())
+        # Xvfb picks a free display itself and writes its number on `-displayfd` once it accepts clients
+        # (a socket file alone can be there a moment before: a client then fails to open the display).
+        read_end, write_end = os.pipe()
+        self.process = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", f"{width}x{height}x24",
+                                         "-nolisten", "tcp"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                        pass_fds=(write_end,))
+        os.close(write_end)
+        try:
+            self.number = int(_read_line(read_end, timeout=10.0, process=self.process))
+        finally:
+            os.close(read_end)
         self.display = f":{self.number}"
-        self.process = subprocess.Popen(["Xvfb", self.display, "-screen", "0", f"{width}x{height}x24", "-nolisten",
-                                         "tcp"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        deadline = time.monotonic() + 10
-        while not Path(f"/tmp/.X11-unix/X{self.number}").exists():
-            if time.monotonic() > deadline or self.process.poll() is not None:
-                raise RuntimeError("Xvfb did not start")
-            time.sleep(0.05)
         self.env = {**os.environ, "DISPLAY": self.display}
         self.env.pop("MUJOCO_GL", None)  # the window renders through GLX on this display
         self.env.pop("PYOPENGL_PLATFORM", None)
@@ -68,6 +71,23 @@ class Xvfb:
         """Stop the server."""
         self.process.terminate()
         self.process.wait(timeout=10)
+
+
+def _read_line(fd: int, timeout: float, process: subprocess.Popen) -> str:
+    """The first line written on pipe `fd` within `timeout` seconds (Xvfb's display number)."""
+    deadline = time.monotonic() + timeout
+    text = b""
+    while not text.endswith(b"\n"):
+        left = deadline - time.monotonic()
+        if left <= 0 or process.poll() is not None:
+            raise RuntimeError("Xvfb did not start")
+        ready, _, _ = select.select([fd], [], [], left)
+        if ready:
+            chunk = os.read(fd, 64)
+            if not chunk:
+                raise RuntimeError("Xvfb did not start")
+            text += chunk
+    return text.decode().strip()
 
 
 def read_xwd(data: bytes) -> np.ndarray:
