@@ -171,3 +171,25 @@ def test_a_damaged_entry_is_ignored_and_replaced(cache, world, monkeypatch):
     _, _, result = world_cache.load_and_compile(world, CompileOptions())
     assert len(loads) == 2 and result.model.nbody > 1
     assert world_cache.stamps_of(entry)  # written anew
+
+
+def test_a_run_from_the_cache_loads_neither_expander_nor_compiler(cache, world):
+    """Start-up: preparing a cached world in a fresh interpreter leaves the compile stage unloaded."""
+    import subprocess
+    import sys
+
+    script = (
+        "import sys\nfrom pathlib import Path\nfrom wbtc.runtime.launch import prepare\n"
+        f"prepare(Path({str(world)!r}))\n"
+        "print(sorted(m for m in sys.modules if m.startswith('wbtc.')))\n"
+    )
+    env = {**os.environ, "MUJOCO_GL": "disable"}
+    first = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, check=True)
+    assert "'wbtc.compile.compiler'" in first.stdout  # the first run compiles
+    again = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env, check=True)
+    loaded = set(eval(again.stdout))  # noqa: S307 - our own script's printed list
+    unloaded = {"wbtc.compile.compiler", "wbtc.compile.solid", "wbtc.compile.geometry", "wbtc.pipeline",
+                "wbtc.scene.build", "wbtc.proto.expand", "wbtc.runtime.supervisor",
+                "wbtc.runtime.scene_ops", "wbtc.runtime.overrides"}
+    assert loaded & unloaded == set()
+    assert {"wbtc.compile.result", "wbtc.runtime.simulation", "wbtc.scene.model"} <= loaded

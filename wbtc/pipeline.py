@@ -11,7 +11,8 @@ from pathlib import Path
 from wbtc.compile.compiler import CompileResult, compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import WbtcError
-from wbtc.proto.expand import Expansion, expand_scene
+from wbtc.proto.expand import expand_scene
+from wbtc.proto.instances import Expansion
 from wbtc.scene import build_scene
 from wbtc.scene.model import Scene
 from wbtc.vrml import parse_file

@@ -38,10 +38,10 @@ from contextlib import contextmanager
 from dataclasses import astuple
 from pathlib import Path
 
-from wbtc.compile.compiler import CompileResult, compile_scene
 from wbtc.compile.context import CompileOptions
+from wbtc.compile.result import CompileResult
 from wbtc.proto import template_files
-from wbtc.proto.expand import Expansion
+from wbtc.proto.instances import Expansion
 from wbtc.proto.model import file_stamp, proto_tags
 from wbtc.proto.resolve import project_proto_dirs
 from wbtc.resources import protos_dir
@@ -59,16 +59,18 @@ def load_and_compile(world: Path, options: CompileOptions) -> tuple[Scene, Expan
     Raises:
         WbtcError: the world does not load or compile (nothing is cached then).
     """
-    from wbtc.pipeline import load_world
-
     folder = _cache_folder()
-    if folder is None:
-        scene, expansion = load_world(world)
-        return scene, expansion, compile_scene(scene, options)
-    entry = folder / f"{_key(world, options)}.pickle"
-    cached = _read(entry)
+    entry = folder / f"{_key(world, options)}.pickle" if folder is not None else None
+    cached = _read(entry) if entry is not None else None
     if cached is not None:
         return cached
+    # The parser, PROTO expander and compiler load only when the cache cannot answer (start-up).
+    from wbtc.compile.compiler import compile_scene
+    from wbtc.pipeline import load_world
+
+    if entry is None:
+        scene, expansion = load_world(world)
+        return scene, expansion, compile_scene(scene, options)
     with _watching() as looked_at:
         generation = template_files.outside_inputs()
         scene, expansion = load_world(world)

@@ -13,8 +13,7 @@ Not honoured yet: re-expansion when a field changes at run time (supervisor, iss
 
 from __future__ import annotations
 
-from collections import Counter
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +21,7 @@ import numpy as np
 
 from wbtc.errors import Diagnostic, ProtoError, SchemaError, Span
 from wbtc.proto.hidden import apply_hidden
+from wbtc.proto.instances import Expansion, ProtoInstance, Typed
 from wbtc.proto.model import InterfaceField, ProtoModel, load_proto, written_version
 from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.proto.template_render import render_body, template_context
@@ -35,42 +35,6 @@ from wbtc.vrml.values import coerce, format_value
 
 #: Deeper nesting than this is taken for a PROTO that contains itself.
 MAX_DEPTH = 40
-
-
-@dataclass(slots=True)
-class Typed:
-    """A value already typed by an outer PROTO, passed by IS into a nested instance's field."""
-
-    type: str
-    value: Any
-    span: Span | None = None
-
-
-@dataclass(slots=True)
-class ProtoInstance:
-    """What an expanded root node remembers about the instance it came from."""
-
-    name: str
-    source: ProtoSource
-    values: dict[str, Any]
-    span: Span
-    def_name: str | None = None
-    inner: ProtoInstance | None = None
-    #: This instance's fields written `IS param` in the PROTO body holding it (field -> param of `owner`).
-    links: dict[str, str] | None = None
-    #: The instance (one level of a PROTO chain) whose body holds this one; None in the world itself.
-    owner: ProtoInstance | None = None
-
-
-@dataclass(slots=True)
-class Expansion:
-    """What expanding a scene found: PROTO sources, counts of instances written in the world."""
-
-    sources: dict[str, ProtoSource | None] = field(default_factory=dict)
-    counts: Counter[str] = field(default_factory=Counter)
-    warnings: list[Diagnostic] = field(default_factory=list)
-    errors: list[Diagnostic] = field(default_factory=list)
-    console: list[str] = field(default_factory=list)
 
 
 def _is_node(value: Any) -> bool:

@@ -16,7 +16,6 @@ from typing import Any
 from wbtc.errors import ProtoError, SchemaError
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import Version
-from wbtc.vrml.parser import parse_file
 from wbtc.vrml.values import coerce
 
 
@@ -149,6 +148,8 @@ def load_proto(path: Path) -> ProtoModel:
 
 @lru_cache(maxsize=512)
 def _load_proto(path: Path, stamp: tuple[int, int]) -> ProtoModel:
+    from wbtc.vrml.parser import parse_file  # here: a run from the world cache never parses
+
     syntax = parse_file(path)
     if not syntax.protos:
         raise ProtoError(f"{path.name} declares no PROTO", None)

@@ -16,8 +16,7 @@ import mujoco
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime import tracks
 from wbtc.runtime.devices import Receiver
-from wbtc.runtime.scene_ops import store_pose
-from wbtc.runtime.scene_tree import to_typed
+from wbtc.runtime.scene_tree import store_pose, to_typed
 from wbtc.runtime.simulation import RobotState, Simulation
 
 

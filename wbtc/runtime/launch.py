@@ -18,22 +18,19 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from wbtc.compile.compiler import compile_scene
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
-from wbtc.pipeline import load_world
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
-from wbtc.runtime.overrides import apply_overrides
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
-from wbtc.runtime.supervisor import SupervisorHub
 from wbtc.scene.model import Scene
 from wbtc.world_cache import load_and_compile
 
 if TYPE_CHECKING:
     from wbtc.runtime.animation import PageRecorder
     from wbtc.runtime.record import Recorder
+    from wbtc.runtime.supervisor import SupervisorHub
 
 
 @dataclass
@@ -57,6 +54,12 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     """
     compile_options = CompileOptions(max_substep_ms=physics_step)
     if fields:
+        # Imported here, as the supervisor below: a world from the cache needs neither the parser,
+        # the PROTO expander nor the compiler, which are a good part of wbtc's own import time.
+        from wbtc.compile.compiler import compile_scene
+        from wbtc.pipeline import load_world
+        from wbtc.runtime.overrides import apply_overrides
+
         scene, expansion = load_world(world)
         apply_overrides(scene, fields)
         result = compile_scene(scene, compile_options)
@@ -65,8 +68,12 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     unhonoured = [w for w in result.warnings if "not honoured" in w.message]
     warnings = expansion.warnings + [w for w in result.warnings if w not in unhonoured]
     sim = Simulation(result, seed=seed, noise=noise)
-    hub = SupervisorHub(sim, scene, world, compile_options) if any(r.supervisor for r in result.table.robots) else None
-    if hub is None:  # a hub keeps sim.tree itself (it changes with resets)
+    hub = None
+    if any(r.supervisor for r in result.table.robots):
+        from wbtc.runtime.supervisor import SupervisorHub
+
+        hub = SupervisorHub(sim, scene, world, compile_options)
+    else:  # a hub keeps sim.tree itself (it changes with resets)
         sim.tree = SceneTree(scene)  # Webots node ids (camera recognition)
     return Prepared(sim, hub, warnings, unhonoured, scene, compile_options)
 
@@ -86,6 +93,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     window = None
     if not headless and _has_display():
         if hub is None:  # the window's reset key needs what a supervisor's simulationReset uses
+            from wbtc.runtime.supervisor import SupervisorHub
+
             hub = SupervisorHub(sim, prepared.scene, world, prepared.options)
         window = open_window(sim, world, lambda: hub.queue(None, "resetButton", ()))
     hooks = [window.sync] if window is not None else []

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import mujoco
 
-from wbtc.compile.compiler import CompileResult
+from wbtc.compile.result import CompileResult
 from wbtc.runtime import tracks, visibility
 from wbtc.runtime.devices import Emitter, Led, Receiver
 from wbtc.runtime.joint_positions import moved_to_new_position

@@ -22,12 +22,14 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from wbtc.runtime import commands
 from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, Substitutions, find_controller
 from wbtc.runtime.simulation import RobotState, Simulation
-from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
+
+if TYPE_CHECKING:  # the supervisor's modules (PROTO expansion, the compiler) load only with a supervisor
+    from wbtc.runtime.supervisor import SupervisorHub
 
 DEFAULT_LIMIT_S = 60.0
 #: Webots' simulation modes (Supervisor.SIMULATION_MODE_*).
@@ -186,6 +188,8 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
         _catch_up(sim, link)
         # Webots' library sees devices imported into its own robot at once (getDevice right after the import).
         return {"result": None, "new_devices": commands.announce_devices(link.robot)}
+    from wbtc.runtime.supervisor import SupervisorError  # loaded with the hub already
+
     try:
         return {"result": hub.call(link.robot, op, args)}
     except SupervisorError as exc:

@@ -16,7 +16,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from wbtc.errors import WbtcError
-from wbtc.proto.expand import Expander, Typed
+from wbtc.proto.expand import Expander
+from wbtc.proto.instances import Typed
 from wbtc.proto.model import load_proto
 from wbtc.proto.resolve import Resolver
 from wbtc.runtime.scene_tree import FieldRef, SceneTree, items_of, to_typed
@@ -56,13 +57,6 @@ def remove_value(tree: SceneTree, ref: FieldRef, index: int) -> None:
         raise WbtcError(f"index {index} out of range for field '{ref.name}'")
     del items[index]
     tree.store(ref, items)
-
-
-def store_pose(node: Node, name: str, value: Any) -> None:
-    """Remember a moved Solid's new translation/rotation (recompiles place static bodies from it)."""
-    node.fields[name] = value
-    if node.proto is not None and name in node.proto.values:
-        node.proto.values[name] = value
 
 
 def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Node:

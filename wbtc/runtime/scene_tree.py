@@ -350,3 +350,10 @@ def actual_field(tree: SceneTree, ref: FieldRef) -> FieldRef | None:
             return tree.field(node, name, 1) if node is not None else None
         instance, name = instance.owner, (instance.links or {}).get(name)
     return None
+
+
+def store_pose(node: Node, name: str, value: Any) -> None:
+    """Remember a moved Solid's new translation/rotation (recompiles place static bodies from it)."""
+    node.fields[name] = value
+    if node.proto is not None and name in node.proto.values:
+        node.proto.values[name] = value

@@ -15,8 +15,8 @@ from typing import Any
 import mujoco
 import numpy as np
 
-from wbtc.compile.compiler import CompileResult
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
+from wbtc.compile.result import CompileResult
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime import conveyors, substeps, tone, tracks
 from wbtc.runtime.battery import Battery

@@ -42,7 +42,16 @@ from wbtc.runtime import poses, scene_ops, states, supervisor_world, visibility,
 from wbtc.runtime import supervisor_queries as queries
 from wbtc.runtime.recordings import RecordingError, Recordings
 from wbtc.runtime.reset import Initial
-from wbtc.runtime.scene_tree import ROOT_ID, FieldRef, SceneTree, actual_field, items_of, proto_names, to_typed
+from wbtc.runtime.scene_tree import (
+    ROOT_ID,
+    FieldRef,
+    SceneTree,
+    actual_field,
+    items_of,
+    proto_names,
+    store_pose,
+    to_typed,
+)
 from wbtc.runtime.simulation import RobotState, Simulation
 from wbtc.scene.model import Node, Scene
 
@@ -318,7 +327,7 @@ class SupervisorHub:
             if ref.name in _POSE_FIELDS and not ref.type.startswith("MF") and poses.solid_body(self.sim, ref.node):
                 poses.set_local_pose(self.sim, ref.node, value if ref.name == "translation" else None,
                                      value if ref.name == "rotation" else None)
-                scene_ops.store_pose(ref.node, ref.name, to_typed(ref.type, value))
+                store_pose(ref.node, ref.name, to_typed(ref.type, value))
                 return
             scene_ops.set_value(tree, ref, index, value)
             if ref.name == "customData" and ref.node.is_a("Robot"):

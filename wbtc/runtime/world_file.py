@@ -25,12 +25,12 @@ from typing import TYPE_CHECKING, Any
 from wbtc.proto.hidden import joints_of, solids_of
 from wbtc.proto.model import load_proto
 from wbtc.runtime import poses
-from wbtc.runtime.scene_ops import export_string, store_pose
+from wbtc.runtime.scene_ops import export_string
+from wbtc.runtime.scene_tree import SceneTree, store_pose
 from wbtc.scene.model import Node
 from wbtc.vrml.values import format_value
 
 if TYPE_CHECKING:
-    from wbtc.runtime.scene_tree import SceneTree
     from wbtc.runtime.simulation import Simulation
 
 _ABSENT = object()  # a field a node did not have before saving
