@@ -124,7 +124,7 @@ def scan_costs(folder: Path) -> tuple[float, float]:
 
     def single() -> None:
         for d in dirs:
-            mujoco.mj_ray(sim.model, sim.data, pos, d, lidar.caster.groups, 1, -1, geom, normal)
+            mujoco.mj_ray(sim.model, sim.data, pos, d, lidar.caster.caster.groups, 1, -1, geom, normal)
 
     one_by_one = best_of(lambda: [single() for _ in range(20)], runs=3) / 20
     sim.close()

@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.own_shapes import OwnShapes
 from wbtc.runtime.sensors import Sensor
 from wbtc.runtime.visible_rays import VisibleRays
 
@@ -65,8 +66,8 @@ class Lidar(Sensor):
         self.step_ms = sim.step_ms
         self.angle = 0.0  # the rotating head's azimuth in the lidar frame (it turns clockwise: decreasing)
         self.last_ms = 0.0
-        self.caster = VisibleRays(self.near)
         self.rays, self.depth_axis, self.angles = self._layout()
+        self.caster = OwnShapes(VisibleRays(self.near), self.site, self.rays)
         count = self.layers * self.width
         self.ranges = np.zeros(count) if self.rotating else np.full(count, math.inf)
         self.times = np.zeros(count)
@@ -157,7 +158,7 @@ class Lidar(Sensor):
         # Planar: the range is the depth along the camera axis, so a ray may travel farther than maxRange.
         cosine = local @ self.depth_axis if self.depth_axis is not None else np.ones(len(index))
         limit = self.max_range / np.maximum(cosine, 1e-6)
-        dist = self.caster.cast(sim, pos, local @ mat.T, limit)
+        dist = self.caster.cast(sim, pos, mat, index, limit)
         ranges = dist * cosine
         ranges[(ranges < self.min_range) | (ranges >= self.max_range)] = math.inf
         if self.noise > 0 and sim.noise_rng is not None:

@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.own_shapes import OwnShapes
 from wbtc.runtime.sensors import Sensor
 from wbtc.runtime.visible_rays import VisibleRays
 
@@ -52,7 +53,7 @@ class RangeFinder(Sensor):
         # Before R2023a a `spherical TRUE` RangeFinder was what `projection "spherical"` is now.
         planar = str(f.get("projection", "planar")) == "planar" and not f.get("spherical")
         self.rays = None if planar else _angular_rays(fov, self.width, self.height)
-        self.caster = VisibleRays(self.near)
+        self.caster = None if self.rays is None else OwnShapes(VisibleRays(self.near), self.site, self.rays)
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """The range image (rows from the top, as Webots' range image)."""
@@ -62,7 +63,8 @@ class RangeFinder(Sensor):
         else:
             pos, mat = self.frame(sim)
             limit = np.full(len(self.rays), self.max_range)
-            ranges = self.caster.cast(sim, pos, self.rays @ mat.T, limit).reshape(self.height, self.width)
+            every = np.arange(len(self.rays))
+            ranges = self.caster.cast(sim, pos, mat, every, limit).reshape(self.height, self.width)
         finite = np.isfinite(ranges)
         if self.noise > 0 and sim.noise_rng is not None:
             ranges[finite] += sim.noise_rng.normal(0.0, self.noise * self.max_range, int(finite.sum()))

@@ -14,6 +14,8 @@ Not honoured yet: geoms with alpha 0 (MuJoCo's rays skip them; Webots' depth cam
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from typing import TYPE_CHECKING
 
 import mujoco
@@ -40,7 +42,8 @@ class VisibleRays:
         self.groups[VISUAL_GROUP] = 1
         self._inside: tuple[mujoco.MjModel | None, list[int]] = (None, [])  # shapes holding the origin
 
-    def cast(self, sim: Simulation, origin: np.ndarray, dirs: np.ndarray, limit: np.ndarray) -> np.ndarray:
+    def cast(self, sim: Simulation, origin: np.ndarray, dirs: np.ndarray, limit: np.ndarray,
+             hidden: Sequence[int] = ()) -> np.ndarray:
         """Distance along each unit ray to the first visible front face beyond `near` (inf: none within `limit`).
 
         A hit the lidar cannot see is a back face (the ray starts inside a shape, or meets a plane from
@@ -49,6 +52,7 @@ class VisibleRays:
         is convex, so a ray never re-enters it and hiding it is exact; a mesh may be concave, so its rays
         go on one by one instead. A primitive that holds the origin (a lidar's own housing) hides every
         ray: once met from behind it is hidden from the start, for as long as it still holds the origin.
+        The shapes `hidden` are not seen at all (`own_shapes` casts at a device's own shapes apart).
         """
         model, data = sim.model, sim.data
         count = len(dirs)
@@ -58,20 +62,22 @@ class VisibleRays:
             self._inside = (model, [])
         inside = [g for g in self._inside[1] if _holds(model, data, g, start)]
         self._inside = (model, inside)
-        geom, dist, facing = self._hidden_cast(model, data, start, dirs, cutoff, inside)
+        unseen_from_start = sorted(set(inside).union(hidden))
+        geom, dist, facing = self._hidden_cast(model, data, start, dirs, cutoff, unseen_from_start)
         types = model.geom_type
         key = np.zeros(count, dtype=np.int64)  # which set of shapes each ray went through (0: none)
         sets: dict[tuple[int, int], int] = {}
-        members: list[list[int]] = [list(inside)]
+        members: list[list[int]] = [unseen_from_start]
         final = np.zeros(count, dtype=bool)  # rays continued one by one: their distance is the answer
         for _ in range(_MAX_CONTINUES):
             unseen = np.flatnonzero(~final & (geom >= 0) & ((facing > 0) | (dist < self.near)))
             if not len(unseen):
                 break
             mesh = types[geom[unseen]] == mujoco.mjtGeom.mjGEOM_MESH
-            for k in unseen[mesh].tolist():
-                dist[k] = self._continue(sim, start, dirs[k], float(dist[k]), float(limit[k]))
-                final[k] = True
+            with _hiding(model, unseen_from_start):
+                for k in unseen[mesh].tolist():
+                    dist[k] = self._continue(sim, start, dirs[k], float(dist[k]), float(limit[k]))
+                    final[k] = True
             unseen = unseen[~mesh]
             pairs, which = np.unique(key[unseen] * model.ngeom + geom[unseen], return_inverse=True)
             for index, pair in enumerate(pairs.tolist()):
@@ -98,12 +104,8 @@ class VisibleRays:
         """`_multi_ray` with the geoms `hidden` put out of the rays' sight for the cast."""
         if not hidden:
             return self._multi_ray(model, data, start, dirs, cutoff)
-        saved = model.geom_group[hidden].copy()
-        model.geom_group[hidden] = _HIDDEN_GROUP
-        try:
+        with _hiding(model, hidden):
             return self._multi_ray(model, data, start, dirs, cutoff)
-        finally:
-            model.geom_group[hidden] = saved
 
     def _multi_ray(self, model: mujoco.MjModel, data: mujoco.MjData, start: np.ndarray, dirs: np.ndarray,
                    cutoff: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -131,6 +133,20 @@ class VisibleRays:
             if float(normal @ direction) <= 0 and travelled >= self.near:
                 return travelled
         return math.inf
+
+
+@contextmanager
+def _hiding(model: mujoco.MjModel, geoms: list[int]) -> Iterator[None]:
+    """Put `geoms` out of the rays' sight (in a group they do not see) while the block runs."""
+    if not geoms:
+        yield
+        return
+    saved = model.geom_group[geoms].copy()
+    model.geom_group[geoms] = _HIDDEN_GROUP
+    try:
+        yield
+    finally:
+        model.geom_group[geoms] = saved
 
 
 def _holds(model: mujoco.MjModel, data: mujoco.MjData, geom: int, point: np.ndarray) -> bool:
