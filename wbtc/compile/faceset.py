@@ -55,6 +55,26 @@ def _points(node: Any, name: str, width: int) -> np.ndarray | None:
     return array.reshape(-1, width)
 
 
+def coordinates(node: Any) -> np.ndarray | None:
+    """All the (n, 3) coordinates of an IndexedFaceSet, used by a face or not (None: it has none)."""
+    return _points(node.get("coord"), "point", 3)
+
+
+def has_texture_coordinates(node: Any) -> bool:
+    """Whether an IndexedFaceSet's own texture coordinates are used (else Webots' default mapping is).
+
+    As WbTriangleMesh decides: `texCoord` has points, and `texCoordIndex` is empty (then `coordIndex`
+    indexes them) or as long as `coordIndex`.
+    """
+    if _points(node.get("texCoord"), "point", 2) is None:
+        return False
+    tex_index = node.get("texCoordIndex")
+    coord_index = node.get("coordIndex")
+    if tex_index is None or len(tex_index) == 0:
+        return True
+    return len(tex_index) == len(coord_index if coord_index is not None else [])
+
+
 def _indexed_face_set(node: Any, warnings: list[Diagnostic]) -> MeshData | None:
     points = _points(node.get("coord"), "point", 3)
     coord_index = np.asarray(node.get("coordIndex") if node.get("coordIndex") is not None else [], dtype=np.int64)

@@ -6,20 +6,21 @@ the image file other shapes share. So, in a world that has at least one Pen, eve
 Shape is compiled with:
 
 - a MuJoCo texture of its own, Webots' paint layer with the image drawn in (`primitive_uv`: a Box's
-  faces each get their own part of it), which the runtime (`runtime.pen`) writes ink into;
+  faces each get their own part of it; `faceset_uv`: an IndexedFaceSet without texture coordinates
+  of its own is painted through Webots' non-repeating mapping, on a layer 4 x 2 times the image's
+  size), which the runtime (`runtime.pen`) writes ink into;
 - a material of its own showing that texture (a copy of the appearance's, without a repeat: the
   TextureTransform's scale is carried by the mesh's texture coordinates instead);
-- a mesh geom, primitives included (`primitive_uv`), whose texture coordinates address the layer:
+- a mesh geom, primitives included (`primitive_uv`, `faceset_uv`), whose texture coordinates address the layer:
   the runtime finds the texture coordinate of the point it paints from the mesh's triangles.
 
 The DeviceTable's `paintable` names each such geom's texture, how many texels of Webots' layer a
 metre of lead covers, and the texture's texels per texel of Webots' layer. Worlds without a Pen compile as before.
 
-Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); an
-IndexedFaceSet without `texCoord` is painted through the default mapping its texture shows, on a
-layer of the image's size (Webots paints it through a non-repeating mapping on a layer 4 x 2 times
-the image's size, so its strokes cover fewer texels); cameras sample the whole texture texel by texel
-(`offscreen`), where Webots filters the image and samples only the ink so.
+Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); a Mesh
+whose file has no texture coordinates gets no ink (Webots paints it on a layer 4 x 2 times the
+image's size too); cameras sample the whole texture texel by texel (`offscreen`), where Webots filters the image and
+samples only the ink so.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ from dataclasses import dataclass
 import mujoco
 import numpy as np
 
-from wbtc.compile import primitive_uv, textures
+from wbtc.compile import faceset_uv, primitive_uv, textures
 from wbtc.compile.context import CompileContext
 from wbtc.scene.model import Node
 
@@ -54,11 +55,13 @@ class PaintSetup:
     Attributes:
         material: its own material (a copy of the appearance's).
         texture: its own texture, the paint layer with the image drawn in.
-        painted: a primitive's mesh and layer layout (`primitive_uv`); None for an IndexedFaceSet or a
-            Mesh, whose own texture coordinates address the layer (the image itself).
+        painted: a primitive's, or a default-mapped IndexedFaceSet's, mesh and layer layout
+            (`primitive_uv`, `faceset_uv`); None for an IndexedFaceSet with texture coordinates of its
+            own or a Mesh, whose own texture coordinates address the layer (the image itself).
         image_width: the image's width in pixels (Webots sizes the lead by it).
         zoom: the layer's texels per texel of Webots' layer (more than 1 when a TextureTransform
-            repeats the image within a primitive's layer: each copy keeps its resolution).
+            repeats the image within the layer of a primitive or a default-mapped IndexedFaceSet: each
+            copy keeps its resolution).
     """
 
     material: str
@@ -89,7 +92,10 @@ def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> Paint
         painted = primitive_uv.primitive_mesh(geometry, ctx.legacy_axes(geometry))
         if painted is None:
             return None
-    elif geometry.base_type not in ("IndexedFaceSet", "Mesh"):
+    elif geometry.base_type == "IndexedFaceSet":
+        # None: its own texture coordinates address a layer of the image's size (Webots' size factor 1).
+        painted = faceset_uv.painted_faceset(geometry, ctx.warnings)
+    elif geometry.base_type != "Mesh":
         return None
     try:
         image = textures.load_texture(path)
@@ -113,13 +119,14 @@ def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> Paint
 
 
 def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | None) -> tuple[np.ndarray, float]:
-    """The paint layer of a primitive, and its texels per texel of Webots' layer.
+    """The paint layer of a primitive or a default-mapped IndexedFaceSet, and its texels per texel of Webots' layer.
 
     White, with the image in each region as the shape shows it: the region's own (s, t) go through the
     appearance's TextureTransform (which repeats, turns or moves the image) and pick the image's
-    nearest pixel. Webots' layer is the image's size times the grid; here it is as many times larger
-    again as the transform repeats the image (so that each copy keeps its pixels), 4096 texels a side
-    at most.
+    nearest pixel (an IndexedFaceSet's triangles each show the image through the default mapping:
+    `faceset_uv.draw_layer`). Webots' layer is the image's size times the grid; here it is as many
+    times larger again as the transform repeats the image (so that each copy keeps its pixels), 4096
+    texels a side at most.
     """
     columns, rows = painted.grid
     height, width = pixels.shape[:2]
@@ -128,6 +135,8 @@ def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | 
         repeat = max(1.0, *(abs(float(v)) for v in transform.get("scale")))
     out_w = max(1, min(round(width * columns * repeat), _MAX_LAYER))
     out_h = max(1, min(round(height * rows * out_w / (width * columns)), _MAX_LAYER))
+    if painted.image_uv is not None:
+        return faceset_uv.draw_layer(pixels, painted, (out_w, out_h), transform), out_w / (width * columns)
     layer = np.full((out_h, out_w, pixels.shape[2]), 255, dtype=np.uint8)
     for s0, t0, s1, t1 in painted.regions:
         # (s, t) count t upwards; the layer's rows run from the top.

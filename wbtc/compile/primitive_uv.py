@@ -58,11 +58,14 @@ class Painted:
         mesh: the triangles, texture coordinates (s, t, t upwards) in the whole layer.
         grid: the layer's size in images (columns, rows): (4, 2) for a Box.
         regions: where the image is drawn in the layer, as (s0, t0, s1, t1) rectangles.
+        image_uv: instead of regions, the image's (s, t) at each vertex of the mesh (t upwards): each
+            triangle is drawn into the layer with the image it shows (`faceset_uv.draw_layer`).
     """
 
     mesh: MeshData
     grid: tuple[int, int] = (1, 1)
     regions: list[tuple[float, float, float, float]] = field(default_factory=lambda: [(0.0, 0.0, 1.0, 1.0)])
+    image_uv: np.ndarray | None = None
 
 
 def primitive_mesh(node: Node, legacy: bool = False) -> Painted | None:
