@@ -66,3 +66,16 @@ def test_check_human_report() -> None:
     assert lines[0].endswith("small_robot.wbt: Webots R2025a world, ENU axes, 15 nodes")
     assert "  bot (controller \"drive\", 4 devices)" in lines
     assert "    ds_front     DistanceSensor" in lines
+
+
+def test_warnings_past_the_first_twenty_are_counted_as_warnings(tmp_path: Path) -> None:
+    shapes = "".join(
+        f'Solid {{ translation {i} 0 0 name "s{i}" children [ Shape {{ appearance Appearance {{ texture '
+        f'ImageTexture {{ url [ "missing{i}.png" ] }} }} geometry Box {{ }} }} ] }}\n' for i in range(23))
+    world = tmp_path / "textures.wbt"
+    world.write_text("#VRML_SIM R2023b utf8\nWorldInfo { }\n" + shapes, encoding="utf-8")
+    result = runner.invoke(app, ["compile", str(world), "-o", str(tmp_path / "out.xml")])
+    assert result.exit_code == 0, result.output
+    lines = result.stderr.splitlines()
+    assert sum("warning: the texture 'missing" in line for line in lines) == 20
+    assert lines[-1] == "... and 3 more warnings"

@@ -41,8 +41,11 @@ def _print_diagnostics(diagnostics: list[Diagnostic]) -> None:
     color = sys.stderr.isatty()
     for diag in diagnostics[:SHOWN_ERRORS]:
         typer.echo(render_diagnostic(diag, color=color), err=True)
-    if len(diagnostics) > SHOWN_ERRORS:
-        typer.echo(f"... and {len(diagnostics) - SHOWN_ERRORS} more errors", err=True)
+    rest = diagnostics[SHOWN_ERRORS:]
+    if rest:
+        kinds = {d.severity for d in rest}
+        kind = "errors" if kinds == {"error"} else "warnings" if kinds == {"warning"} else "errors and warnings"
+        typer.echo(f"... and {len(rest)} more {kind}", err=True)
 
 
 def _guard(action: Callable[[], T]) -> T:
