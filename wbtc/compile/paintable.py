@@ -15,7 +15,8 @@ Shape is compiled with:
   the runtime finds the texture coordinate of the point it paints from the mesh's triangles.
 
 The DeviceTable's `paintable` names each such geom's texture, how many texels of Webots' layer a
-metre of lead covers, and the texture's texels per texel of Webots' layer. Worlds without a Pen compile as before.
+metre of lead covers, the texture's texels per texel of Webots' layer and the geometry's node type.
+Worlds without a Pen compile as before.
 
 Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); a Mesh
 whose file has no texture coordinates gets no ink (Webots paints it on a layer 4 x 2 times the
@@ -190,4 +191,6 @@ def register(ctx: CompileContext, geom: mujoco.MjsGeom, setup: PaintSetup, shape
         return
     centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2
     radius = float(np.linalg.norm(vertices - centre, axis=1).max())
-    ctx.table.paintable[geom.name] = (setup.texture, setup.image_width / max(radius, 1e-9), setup.zoom)
+    geometry = shape.get("geometry")
+    kind = geometry.base_type if isinstance(geometry, Node) else ""
+    ctx.table.paintable[geom.name] = (setup.texture, setup.image_width / max(radius, 1e-9), setup.zoom, kind)

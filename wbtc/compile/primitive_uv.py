@@ -19,8 +19,13 @@ Cones and Planes, whose axis was y, as it does for MuJoCo primitives), (s, t) wi
 - Plane: the image over the plane, s along +x, t along +y.
 - Sphere: longitude and latitude: s goes once round the z axis from the back (-x) counter-clockwise
   seen from above, t from the south pole (0) to the north pole (1).
-- Cylinder and Cone: the side as the sphere's (s round z from the back, t up the height); the caps a
-  disc cut out of the image centre (s along +x; t along +y on the top, -y on the bottom).
+- Cylinder: the side once round, s from 0 at +y growing counter-clockwise seen from +z (Webots' seam
+  and direction), t up the height; in the layer the side fills the top-left quarter, the top cap the
+  top-right and the bottom cap the bottom-left one (Webots' layout; the side is one image wide, as
+  Webots' is, so strokes keep its width round the side).
+- Cone: the side as the sphere's (s round z from the back, t up the height).
+- Cylinder and Cone caps: a disc cut out of the image centre (s along +x; t along +y on the top, -y
+  on the bottom).
 - Capsule: the side and both caps as one surface of revolution, t along the profile's length.
 - ElevationGrid: the image over the whole grid, s along x, t along the second axis (y; z in
   pre-R2022a files).
@@ -85,8 +90,11 @@ def primitive_mesh(node: Node, legacy: bool = False) -> Painted | None:
         return Painted(sphere(float(node.get("radius"))))
     sides = _sides(node)
     if kind == "Cylinder":
+        # Webots' slots (WbCylinder, its unit mesh's second texture coordinates): the side in the top-left
+        # quarter (one image around, as the texture shows it), the top cap top-right, the bottom cap
+        # bottom-left; the bottom-right quarter stays unused. (s, t) here count t upwards.
         return _slotted(revolution(float(node.get("radius")), float(node.get("height")), "cylinder", sides), (2, 2),
-                        [(0.0, 0.0, 1.0, 0.5), (0.0, 0.5, 0.5, 1.0), (0.5, 0.5, 1.0, 1.0)])
+                        [(0.0, 0.5, 0.5, 1.0), (0.5, 0.5, 1.0, 1.0), (0.0, 0.0, 0.5, 0.5)])
     if kind == "Capsule":
         return Painted(revolution(float(node.get("radius")), float(node.get("height")), "capsule")[0])
     if kind == "Cone":
@@ -184,24 +192,26 @@ def plane(size: np.ndarray) -> MeshData:
     return _face(np.array([-sx / 2, -sy / 2, 0.0]), np.array([sx, 0.0, 0.0]), np.array([0.0, sy, 0.0]))
 
 
-def _around(radii: np.ndarray, heights: np.ndarray, t: np.ndarray, sides: int = SEGMENTS) -> MeshData:
+def _around(radii: np.ndarray, heights: np.ndarray, t: np.ndarray, sides: int = SEGMENTS,
+            seam: float = math.pi) -> MeshData:
     """A surface of revolution about z: one ring per profile point (radius, height), s round the axis.
 
-    s = 0 (and 1: the seam's vertices are doubled) lies at the back (-x) and grows counter-clockwise
-    seen from +z. Profile points must run upwards (from the bottom pole or rim) for outward faces.
+    s = 0 (and 1: the seam's vertices are doubled) lies at angle `seam` from +x (the back, -x, unless
+    told) and grows counter-clockwise seen from +z. Profile points must run upwards (from the bottom
+    pole or rim) for outward faces.
     """
     s = np.linspace(0.0, 1.0, sides + 1)
-    angle = math.pi + 2 * math.pi * s  # from -x, counter-clockwise about +z
+    angle = seam + 2 * math.pi * s  # from the seam, counter-clockwise about +z
     points = np.stack([radii[:, None] * np.cos(angle)[None, :], radii[:, None] * np.sin(angle)[None, :],
                        np.broadcast_to(heights[:, None], (len(heights), len(s)))], axis=-1)
     uv = np.stack(np.broadcast_arrays(s[None, :], t[:, None]), axis=-1)
     return _quad_grid(points, uv)
 
 
-def _disc(radius: float, z: float, up: bool, sides: int = SEGMENTS) -> MeshData:
+def _disc(radius: float, z: float, up: bool, sides: int = SEGMENTS, seam: float = math.pi) -> MeshData:
     """A cap of `radius` at height z, facing +z (`up`) or -z, showing the image's inscribed disc."""
     rim = np.linspace(0.0, 1.0, sides + 1)
-    angle = math.pi + 2 * math.pi * rim  # the side's corners, from -x
+    angle = seam + 2 * math.pi * rim  # the side's corners, from its seam
     sign = 1.0 if up else -1.0
     # Two rings (rim, centre) as a grid, in this order so that the faces look along +z (the bottom
     # cap's y is mirrored, which turns it to -z); its t axis runs along -y (seen from below).
@@ -226,8 +236,11 @@ def revolution(radius: float, height: float, kind: str, sides: int = SEGMENTS) -
     """A Cylinder (side, top, bottom), Capsule (one surface) or Cone (side, bottom) about z, centred on its height."""
     r, h = max(radius, 1e-6), max(height, 1e-6)
     if kind == "cylinder":
-        side = _around(np.array([r, r]), np.array([-h / 2, h / 2]), np.array([0.0, 1.0]), sides)
-        return [side, _disc(r, h / 2, True, sides), _disc(r, -h / 2, False, sides)]
+        # Webots' cylinder (Wren's unit cylinder) starts its side's texture at +y, where its first
+        # corner is, and the image runs counter-clockwise seen from +z, as here: at angle pi / 2.
+        seam = math.pi / 2
+        side = _around(np.array([r, r]), np.array([-h / 2, h / 2]), np.array([0.0, 1.0]), sides, seam)
+        return [side, _disc(r, h / 2, True, sides, seam), _disc(r, -h / 2, False, sides, seam)]
     if kind == "cone":
         side = _around(np.array([r, 0.0]), np.array([-h / 2, h / 2]), np.array([0.0, 1.0]), sides)
         return [side, _disc(r, -h / 2, False, sides)]

@@ -165,8 +165,9 @@ class DeviceTable:
             caps DirectionalLights at 1 for MuJoCo's untone-mapped viewer).
         tracks: the robots' Tracks (`wbtc.compile.track.TrackEntry`): belts the runtime moves.
         paintable: in a world with a Pen, each textured visual geom (by name): the texture of its own that
-            pens paint on, Webots' stroke scale (texels per metre of leadSize) and the texture's texels per
-            texel of Webots' paint layer (see `wbtc.compile.paintable`).
+            pens paint on, Webots' stroke scale (texels per metre of leadSize), the texture's texels per
+            texel of Webots' paint layer and the geometry's node type (a Cylinder is painted where the ray
+            meets the round shape, as Webots does; see `wbtc.compile.paintable`).
         ink_evaporation: WorldInfo.inkEvaporation: how fast pens' ink fades (1/s; 0: never).
     """
 
@@ -194,7 +195,7 @@ class DeviceTable:
     # (asymmetric ContactLaws, their geoms' materials by geom name): see wbtc.compile.contact.
     asymmetric_friction: tuple[list[Any], dict[str, str]] | None = None
     tracks: list[Any] = field(default_factory=list)
-    paintable: dict[str, tuple[str, float, float]] = field(default_factory=dict)
+    paintable: dict[str, tuple[str, float, float, str]] = field(default_factory=dict)
     ink_evaporation: float = 0.0
 
     def robot(self, name: str) -> RobotEntry | None:

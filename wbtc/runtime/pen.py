@@ -58,9 +58,10 @@ class Pen:
         # The writing direction is a column of the site's rotation: -z (R2022a on), or -y before.
         self.axis = 1 if entry.legacy_axes else 2
         # Paintable geoms of this model: their textures and stroke scales (compile.paintable), by id.
-        self.targets = {model.geom(geom).id: (model.texture(texture).id, scale, zoom)
-                        for geom, (texture, scale, zoom) in sim.table.paintable.items()}
+        self.targets = {model.geom(geom).id: (model.texture(texture).id, scale, zoom, kind)
+                        for geom, (texture, scale, zoom, kind) in sim.table.paintable.items()}
         self._triangles: dict[int, pen_uv.Triangles | None] = {}
+        self._round: dict[int, tuple[float, float]] = {}  # a Cylinder mesh's radius and half height
 
     def command(self, op: str, args: tuple) -> None:
         """Apply one command from the controller (`write`, `setInkColor`)."""
@@ -83,11 +84,13 @@ class Pen:
         target = self.targets.get(geom)
         if target is None or not math.isfinite(distance):
             return  # nothing within reach, or a shape without a texture of its own: Webots paints nothing
-        found = self._locate(sim, geom, start, direction)
-        if found is None:
+        if target[3] == "Cylinder":
+            centre = self._on_cylinder(sim, geom, start, direction)
+        else:
+            found = self._locate(sim, geom, start, direction)
+            centre = None if found is None else pen_uv.texture_point(*found)
+        if centre is None:
             return
-        tris, index, weights = found
-        centre = pen_uv.texture_point(tris, index, weights)
         if np.any(centre < 0.0) or np.any(centre > 1.0):
             return  # a repeated texture's copy: Webots paints the layer's own coordinates only
         # Webots' stroke: leadSize x image width / bounding radius texels across (at least 1), a disc of
@@ -115,6 +118,27 @@ class Pen:
         if hit is None:
             return None
         return tris, hit[0], hit[1]
+
+    def _on_cylinder(self, sim: Simulation, geom: int, start: np.ndarray, direction: np.ndarray) -> np.ndarray | None:
+        """The layer coordinate where the ray meets paintable Cylinder `geom`'s round shape, as Webots picks it."""
+        model, data = sim.model, sim.data
+        mesh = int(model.geom_dataid[geom])
+        if model.geom_type[geom] != mujoco.mjtGeom.mjGEOM_MESH or mesh < 0:
+            return None
+        # MuJoCo keeps the vertices recentred and turned (v_geom = R^T (v - mesh_pos), R = mesh_quat's
+        # rotation); the cylinder's own frame (axis z, centred, scale included) is v = R v_geom + mesh_pos.
+        turn = np.zeros(9)
+        mujoco.mju_quat2Mat(turn, model.mesh_quat[mesh])
+        turn = turn.reshape(3, 3)
+        shift = np.array(model.mesh_pos[mesh], dtype=float)
+        if mesh not in self._round:
+            adr, count = int(model.mesh_vertadr[mesh]), int(model.mesh_vertnum[mesh])
+            own = model.mesh_vert[adr:adr + count].astype(float) @ turn.T + shift
+            self._round[mesh] = (float(np.hypot(own[:, 0], own[:, 1]).max()), float(np.abs(own[:, 2]).max()))
+        radius, half_height = self._round[mesh]
+        rotation = data.geom_xmat[geom].reshape(3, 3)
+        origin = turn @ (rotation.T @ (start - data.geom_xpos[geom])) + shift
+        return pen_uv.cylinder_point(origin, turn @ (rotation.T @ direction), radius, half_height)
 
     def _ink(self, sim: Simulation, texture: int, centre: np.ndarray, half: int) -> None:
         """Lay the ink on the texels under the lead and mark the texture changed."""

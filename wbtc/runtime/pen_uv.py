@@ -11,10 +11,17 @@ texture's data (the image's top row), which is how the texels are addressed here
 
 Webots draws a stroke in texture space, whatever the surface's stretch: a disc of whole texels
 around the texel under the hit (see `lead_texels`).
+
+A Cylinder is an exception: Webots finds where the ray meets the round cylinder (radius and height
+as written), not its drawn faces, and takes the layer's coordinate there from the angle round the
+axis and the height (`cylinder_point`); the faces show the layer by their corners' coordinates. A
+ray at a slant meets the round side before (or after) the flat faces inside it: on a 12-sided
+cylinder of radius 0.05 a ray 45 degrees down meets it up to 9 texels higher in the layer.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mujoco
@@ -106,3 +113,59 @@ def lead_texels(centre: np.ndarray, half: int, width: int, height: int) -> tuple
     rows, cols = row + dr[inside], col + dc[inside]
     kept = (rows >= 0) & (rows < height) & (cols >= 0) & (cols < width)
     return rows[kept], cols[kept]
+
+
+def cylinder_point(origin: np.ndarray, direction: np.ndarray, radius: float,
+                   half_height: float) -> np.ndarray | None:
+    """Where a ray meets a round cylinder (axis z, centred), as Webots picks it: the layer's (u, v).
+
+    The layer is Webots' 2 x 2 images (v from its first row): the side in the top-left quarter, u
+    from 0 at +y growing counter-clockwise seen from +z (the angle's quarter-turn offset), v from
+    the top rim (0) to the bottom rim (0.5); the top cap in the top-right quarter, the bottom cap in
+    the bottom-left one, each the disc's square with x to the right, the top seen from above (+y at
+    its first row), the bottom from below.
+
+    Args:
+        origin: the ray's start in the cylinder's frame.
+        direction: its direction in that frame (any length).
+        radius: the cylinder's radius.
+        half_height: half its height.
+
+    Returns:
+        None when the ray meets neither the side (from outside) nor a cap ahead of its start.
+    """
+    o = np.asarray(origin, dtype=float)
+    d = np.asarray(direction, dtype=float)
+    d = d / max(float(np.linalg.norm(d)), 1e-300)
+    best, face = math.inf, -1
+    # The side: |o + t d| in the xy plane equals the radius; only from outside it, as Webots.
+    a = d[0] * d[0] + d[1] * d[1]
+    b = 2.0 * (o[0] * d[0] + o[1] * d[1])
+    c = o[0] * o[0] + o[1] * o[1] - radius * radius
+    disc = b * b - 4.0 * a * c
+    if c >= 0.0 and disc > 0.0 and a > 0.0:
+        root = math.sqrt(disc)
+        for t in ((-b - root) / (2.0 * a), (-b + root) / (2.0 * a)):
+            if t > 0.0 and abs(o[2] + t * d[2]) <= half_height:
+                best, face = t, 0
+                break
+    # The caps: the planes z = +-half_height, within the radius, if nearer.
+    for cap, z in ((1, half_height), (2, -half_height)):
+        if d[2] == 0.0:
+            continue
+        t = (z - o[2]) / d[2]
+        x, y = o[0] + t * d[0], o[1] + t * d[1]
+        if 0.0 < t < best and x * x + y * y <= radius * radius:
+            best, face = t, cap
+    if face < 0:
+        return None
+    x, y, z = o + best * d
+    if face == 0:
+        # Angle from +y, counter-clockwise seen from +z, as a fraction of a turn (0 to 1).
+        turn = ((math.atan2(y, x) - math.pi / 2) / (2 * math.pi)) % 1.0
+        return np.array([turn * 0.5, (1.0 - (z + half_height) / (2 * half_height)) * 0.5])
+    across = (x + radius) / (2 * radius)
+    down = (radius - y) / (2 * radius)  # from +y (the cap's first row) to -y
+    if face == 1:
+        return np.array([0.5 + across * 0.5, down * 0.5])
+    return np.array([across * 0.5, 0.5 + (1.0 - down) * 0.5])
