@@ -41,6 +41,11 @@ def main() -> int:
         print(f"{test:<{width}}  {status}  {note}{outcome.wall_s:6.1f} s  {why}"[:220], flush=True)
     total = len(tests)
     print(f"\n{unexpected} unexpected result(s); {time.monotonic() - start:.0f} s wall")
+    for group in suite.SUITES:  # Webots' test folders: tests/api, tests/physics, tests/protos
+        ran = [test for test in tests if test.startswith(group + "/")]
+        if ran and len(ran) < total:
+            good = sum(futures[test].result().passed for test in ran)
+            print(f"  {group}: {good} passed of {len(ran)} ({100.0 * good / len(ran):.1f} %)")
     print(f"conformance: {passed} passed of {total} ({100.0 * passed / total:.1f} %)")
     return 1 if unexpected else 0
 

@@ -1,6 +1,6 @@
 """The conformance suite: Webots' regression test worlds run under `wbtc run`, and their verdicts.
 
-A test is one world of `api/worlds` or `physics/worlds` (its id: `api/gps_speed`). The runner starts
+A test is one world of `api/worlds`, `physics/worlds` or `protos/worlds` (its id: `api/gps_speed`). The runner starts
 `wbtc run WORLD --headless` with the helper folder `lib/` on PYTHONPATH and a results file in
 `WBTC_TS_RESULTS`; each test controller (a Python port of Webots' C controller, using
 `ts_assertion`) writes `START`, then `OK`, `FAILURE` or `EXIT` lines there. A test passes when at
@@ -28,7 +28,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 LIB = HERE / "lib"
-SUITES = ("api", "physics")
+SUITES = ("api", "physics", "protos")
 EXPECTATIONS = HERE / "expected-failures.toml"
 #: Wall-clock seconds a test may take before it counts as hung.
 WALL_LIMIT_S = 240.0
@@ -49,7 +49,7 @@ class Outcome:
 
 
 def all_tests() -> list[str]:
-    """Every test id, sorted (`api/gps_speed`, ..., `physics/...`)."""
+    """Every test id, sorted (`api/gps_speed`, ..., `physics/...`, `protos/...`)."""
     # Worlds a test saves while it runs end in _temp.wbt (as in Webots' suite); they are not tests.
     return [f"{suite}/{world.stem}" for suite in SUITES for world in sorted((HERE / suite / "worlds").glob("*.wbt"))
             if not world.stem.endswith("_temp")]
