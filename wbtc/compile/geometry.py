@@ -5,8 +5,10 @@ infinite half-space when it collides), IndexedFaceSet and Mesh (mesh geoms; MuJo
 their convex hull) and ElevationGrid (a height field). In a world with a Pen, a textured Shape's
 primitive is drawn as a mesh addressing its paint layer instead (`primitive_uv`, `paintable`).
 
-Not honoured yet: Cylinder/Cone `side`, `top`, `bottom` (always closed), `subdivision` of
-primitives (MuJoCo draws its own), Sphere `ico`, Plane `size` for collisions (Webots' plane is
+A visual Cylinder, Capsule or Cone whose `side`, `top` or `bottom` is FALSE is a mesh of the
+parts left (`primitive_uv.open_revolution`); bounding objects keep every part, as ODE's do.
+
+Not honoured yet: `subdivision` of closed primitives (MuJoCo draws its own), Sphere `ico`, Plane `size` for collisions (Webots' plane is
 infinite there too), IndexedLineSet and PointSet (no geom).
 """
 
@@ -28,7 +30,7 @@ from wbtc.scene.model import Node
 GEOMETRY_TYPES = frozenset({"Box", "Sphere", "Cylinder", "Capsule", "Cone", "Plane", "IndexedFaceSet", "Mesh",
                             "ElevationGrid"})
 _LEGACY_AXIS_TYPES = frozenset({"Cylinder", "Capsule", "Cone", "Plane"})
-_UNHONOURED = frozenset({"subdivision", "ico", "side", "top", "bottom", "creaseAngle", "normal", "normalIndex",
+_UNHONOURED = frozenset({"subdivision", "ico", "creaseAngle", "normal", "normalIndex",
                          "normalPerVertex", "convex", "materialIndex"})
 
 
@@ -81,7 +83,7 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
     """
     ctx.unhonoured(node, _UNHONOURED)
     geom_spec = _geom_spec(node, frame, ctx, textured=material is not None, transform=texture_transform,
-                           clamp=texture_clamp, painted=painted)
+                           clamp=texture_clamp, painted=painted, visual=not collision)
     if geom_spec is None:
         return None
     geom = body.add_geom()
@@ -118,7 +120,7 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
 
 def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
                transform: Node | None = None, clamp: texture_clamp.Clamp | None = None,
-               painted: primitive_uv.Painted | None = None) -> GeomSpec | None:
+               painted: primitive_uv.Painted | None = None, visual: bool = False) -> GeomSpec | None:
     kind = node.base_type
     scale = np.abs(frame.scale)
     if kind in _LEGACY_AXIS_TYPES and ctx.legacy_axes(node):
@@ -127,6 +129,11 @@ def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         scale = np.abs(frame.scale)
     if painted is not None:  # the layer's coordinates are final: no TextureTransform, no clamp
         return _mesh_data(node, painted.mesh, frame, ctx, textured)
+    if visual and kind in ("Cylinder", "Capsule", "Cone"):
+        # Webots leaves out what `side`, `top` or `bottom` turn off (bounding objects keep every part).
+        partial = primitive_uv.open_revolution(node)
+        if partial is not None:
+            return _mesh_data(node, partial, frame, ctx, textured, transform, clamp)
     if kind == "Box":
         half = np.abs(np.asarray(node.get("size"), dtype=float)) * scale / 2  # Webots: full edges
         half = np.maximum(half, 1e-6)

@@ -255,6 +255,37 @@ def revolution(radius: float, height: float, kind: str, sides: int = SEGMENTS) -
     return [_around(radii, heights, t, sides)]
 
 
+def open_revolution(node: Node) -> MeshData | None:
+    """A Cylinder, Capsule or Cone drawn without the parts its `side`, `top` or `bottom` leave out.
+
+    None when every part is drawn (the MuJoCo primitive then shows it). A Capsule's parts are its
+    tube and its two hemispheres (Webots' WbCapsule), each with t along its own profile.
+    """
+    kind = node.base_type
+    names = ("side", "bottom") if kind == "Cone" else ("side", "top", "bottom")
+    drawn = [node.get(name) is not False for name in names]
+    if kind not in ("Cylinder", "Capsule", "Cone") or all(drawn):
+        return None
+    if kind == "Capsule":
+        parts = _capsule_parts(float(node.get("radius")), float(node.get("height")), _sides(node))
+    else:
+        radius = float(node.get("bottomRadius" if kind == "Cone" else "radius"))
+        parts = revolution(radius, float(node.get("height")), kind.lower(), _sides(node))
+    kept = [part for part, keep in zip(parts, drawn, strict=True) if keep]
+    return _merge(kept) if kept else None
+
+
+def _capsule_parts(radius: float, height: float, sides: int) -> list[MeshData]:
+    """A Capsule about z as its tube, top hemisphere and bottom hemisphere (profiles running upwards)."""
+    r, h = max(radius, 1e-6), max(height, 1e-6)
+    quarter = np.linspace(0.0, math.pi / 2, RINGS // 2 + 1)
+    rising = np.linspace(0.0, 1.0, len(quarter))
+    tube = _around(np.array([r, r]), np.array([-h / 2, h / 2]), np.array([0.0, 1.0]), sides)
+    top = _around(r * np.cos(quarter), h / 2 + r * np.sin(quarter), rising, sides)
+    bottom = _around(r * np.sin(quarter), -h / 2 - r * np.cos(quarter), rising, sides)
+    return [tube, top, bottom]
+
+
 def elevation_grid(grid: heightfield.HeightField) -> MeshData | None:
     """An ElevationGrid's surface (its top only: Webots' `thickness` is not drawn), the image over the grid."""
     if grid.nrow < 2 or grid.ncol < 2:
