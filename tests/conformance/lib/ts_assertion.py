@@ -55,7 +55,9 @@ def _at_exit() -> None:
 def ts_setup(robot: Any = None, name: str | None = None) -> None:
     """Register this controller as a test (C: `ts_setup(argv[0])`, after `wb_robot_init`)."""
     base = os.path.basename(name or sys.argv[0] or "controller")
-    _state["name"] = base.split(".")[0]
+    # The results file is space-separated: a name such as "template_nested (lua)" (the Lua variants'
+    # controllerArgs) is written "template_nested_(lua)".
+    _state["name"] = base.split(".")[0].replace(" ", "_")
     sys.excepthook = _excepthook
     atexit.register(_at_exit)
     _record("START")
