@@ -493,3 +493,34 @@ def test_reset_button_resets_like_the_supervisor_and_restarts_every_controller(h
     assert sorted(r.entry.name for r in changes.restart) == ["driver", "referee"]
     assert hub.call(referee, "field.get", (box["id"], -1)) == pytest.approx([1, 1, 0.05])
     assert hub.call(referee, "field.get", (arm["id"], -1)) == pytest.approx([0, 0, 0.3])
+
+
+def test_a_proto_given_as_another_protos_parameter_is_rebuilt_where_the_body_takes_it(tmp_path):
+    # Holder's body takes its `slot` by IS: the Group keeps its own copy of the parameter's list.
+    (tmp_path / "Holder.proto").write_text("""#VRML_SIM R2025a utf8
+PROTO Holder [ field MFNode slot [ ] ]
+{ Solid { children [ Pose { translation 0 0 0.5 children [ Group { children IS slot } ] } ] } }
+""", encoding="utf-8")
+    (tmp_path / "Stick.proto").write_text("""#VRML_SIM R2025a utf8
+PROTO Stick [ field SFFloat height 0.1 ]
+{ Shape { geometry Cylinder { radius 0.01 height IS height } } }
+""", encoding="utf-8")
+    world = tmp_path / "nested.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+EXTERNPROTO "Holder.proto"
+EXTERNPROTO "Stick.proto"
+WorldInfo { }
+Holder { slot [ DEF STICK Stick { } ] }
+DEF SUP Robot { supervisor TRUE }
+""", encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub, sup = SupervisorHub(sim, scene, world), sim.robots[0]
+    stick = hub.call(sup, "getFromDef", ("STICK", -1))["id"]
+    height = hub.call(sup, "node.getField", (stick, "height", False))
+    hub.queue(sup, "field.set", (height["id"], -1, 0.3))
+    assert hub.flush().rebuilt
+    cylinders = [g for g in range(hub.sim.model.ngeom) if hub.sim.model.geom_type[g] == 5]  # mjGEOM_CYLINDER
+    assert [round(float(hub.sim.model.geom_size[g][1]), 6) for g in cylinders] == [0.15]  # half of 0.3
+    assert hub.call(sup, "getFromDef", ("STICK", -1))["id"] == stick
+    sim.close()

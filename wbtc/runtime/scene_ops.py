@@ -124,17 +124,10 @@ def reexpand(tree: SceneTree, node: Node) -> Node:
 def _replace(tree: SceneTree, old: Node, new: Node) -> None:
     node_id = tree.node_id(old)
     parent = tree.by_id.get(tree.parents.get(node_id, -1))
-    holders: list[Any] = [tree.scene.nodes] if parent is tree.root or parent is None else []
-    if parent is not None and parent is not tree.root:
-        fields = parent.proto.values if parent.proto is not None else parent.fields
-        holders += [v for v in fields.values() if isinstance(v, list)]
-        for name, value in fields.items():
-            if value is old:
-                fields[name] = new
-    for holder in holders:
-        for i, item in enumerate(holder):
-            if item is old:
-                holder[i] = new
+    if parent is None or parent is tree.root:
+        tree.scene.nodes[:] = [new if item is old else item for item in tree.scene.nodes]
+    else:
+        _swap_inside(parent, old, new)
     tree.ids[id(new)] = node_id
     tree.by_id[node_id] = new
     # Webots regenerates the instance: references to its internal fields (and to fields of the nodes
@@ -149,6 +142,38 @@ def _replace(tree: SceneTree, old: Node, new: Node) -> None:
             tree.dead_fields.append(ref.id)
             tree.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
     tree.refresh()
+
+
+def _swap_inside(root: Node, old: Node, new: Node) -> None:
+    """Put `new` wherever `old` is in the fields of `root` and of every node inside it, PROTO internals included.
+
+    A node given as a PROTO parameter is also in the fields of the PROTO's body that take the
+    parameter by IS (each holds its own copy of the parameter's list), and in the values of the PROTO
+    levels it went through: Webots regenerates it in all of them, and the compiler reads the body's.
+    """
+    seen: set[int] = set()
+    stack = [root]
+    while stack:
+        node = stack.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        levels, instance = [node.fields], node.proto
+        while instance is not None:  # a derived PROTO keeps each level's values
+            levels.append(instance.values)
+            instance = instance.inner
+        for fields in levels:
+            for name, value in fields.items():
+                if value is old:
+                    fields[name] = new
+                elif isinstance(value, Node):
+                    stack.append(value)
+                elif isinstance(value, list):
+                    for i, item in enumerate(value):
+                        if item is old:
+                            value[i] = new
+                        elif isinstance(item, Node):
+                            stack.append(item)
 
 
 def export_string(node: Node, hidden: list[str] | None = None) -> str:
