@@ -53,6 +53,7 @@ from wbtc.runtime.scene_tree import (
     to_typed,
 )
 from wbtc.runtime.simulation import RobotState, Simulation
+from wbtc.runtime.viewpoint_follow import ViewpointFollow, current_follower
 from wbtc.scene.model import Node, Scene
 
 _POSE_FIELDS = ("translation", "rotation")
@@ -91,6 +92,8 @@ class SupervisorHub:
         self.states = {"__init__": states.capture(sim, 0)}  # saveState/loadState, by name
         self.states_world = world  # the world those states belong to
         self.initial = Initial.capture(self.tree)  # what simulationReset puts back
+        self._follower: ViewpointFollow | None = None  # the Viewpoint following a Solid (see `after_step`)
+        self._follow()  # from where everything starts, as Webots begins following when the world loads
 
     # -- queries ------------------------------------------------------------------------------------
     def call(self, robot: RobotState, op: str, args: tuple) -> Any:
@@ -219,6 +222,7 @@ class SupervisorHub:
         elif dirty:
             self._recompile(dirty)
             outcome.rebuilt = True
+        self._follow()  # a regenerated Viewpoint follows on from where it is, before the next step
         changes = self.changes
         changes.rebuilt |= outcome.rebuilt
         changes.reset |= outcome.reset
@@ -312,6 +316,12 @@ class SupervisorHub:
             self.sim.data.xfrc_applied[body] = 0.0
         self.applied_forces = []
         self.recordings.after_step(self.sim)
+        self._follow().step(self.sim, self.sim.step_ms / 1000.0)
+
+    def _follow(self) -> ViewpointFollow:
+        """The Viewpoint's follower (made again when the scene, its Viewpoint or what it follows changed)."""
+        self._follower = current_follower(self._follower, self.tree, self.sim)
+        return self._follower
 
     def close_recordings(self) -> None:
         """Finish the movie and the animation still being recorded when the run ends."""
