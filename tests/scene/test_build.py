@@ -36,6 +36,12 @@ def test_mf_without_brackets_and_comments_inside_lists() -> None:
     assert node[2].fields["coordIndex"].tolist() == [0, 1, 2, -1, 2, 3, 0, -1]
 
 
+def test_null_in_an_mfnode_field_adds_no_node_as_in_webots() -> None:
+    nodes = _scene("Group { children NULL }\nGroup { children [ NULL Shape { } NULL ] }").nodes
+    assert nodes[0].fields["children"] == []
+    assert [child.type_name for child in nodes[1].fields["children"]] == ["Shape"]
+
+
 def test_use_binds_to_the_closest_preceding_def() -> None:
     nodes = _scene(
         "Shape { geometry DEF G Box { size 1 1 1 } }\n"

@@ -45,8 +45,6 @@ CASES = [
      (3, 12, "field 'geometry' of Shape is an SFNode: expected a node, USE or NULL, found 1 number", None)),
     ('mfvec3_not_multiple', H + "Coordinate {\n  point [ 0 0 0, 1 1 ]\n}\n",
      (3, 9, "field 'point' of Coordinate is an MFVec3f: expected groups of 3 numbers, found 5 numbers", None)),
-    ('mfnode_null', H + "Group {\n  children NULL\n}\n",
-     (3, 12, "field 'children' of Group is an MFNode: write [] for an empty list, not NULL", None)),
     ('use_before_def', H + "Shape {\n  geometry USE BOX\n}\nShape {\n  geometry DEF BOX Box {}\n}\n",
      (3, 16, 'USE BOX refers to no DEF before it', 'DEF BOX comes later, at line 6: a USE must come after its DEF')),
     ('use_undefined', H + "Shape {\n  geometry USE NOPE\n}\n",

@@ -163,7 +163,7 @@ def coerce(value: Any, field_type: str, what: str, is_node: Callable[[Any], bool
     if isinstance(value, s.MFList):
         items = value.items
     elif isinstance(value, s.Null) and elem == "Node":
-        raise SchemaError(f"{what} is an MFNode: write [] for an empty list, not NULL", span)
+        return []  # Webots reads NULL as no node at all (WbMFNode appends only the nodes it reads)
     else:
         items = [value]  # one element may be written without brackets
     return _coerce_list(items, elem, what, is_node, field_type, span)
@@ -213,6 +213,8 @@ def _coerce_list(items: list[Any], elem: str, what: str, is_node: Callable[[Any]
         return array if arity == 1 else array.reshape(-1, arity)
     typed = []
     for item in items:
+        if elem == "Node" and isinstance(item, s.Null):
+            continue  # as above: a NULL item adds nothing
         try:
             typed.append(_coerce_single(item, elem, what, is_node, "SF" + elem))
         except SchemaError:
