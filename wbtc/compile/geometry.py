@@ -8,8 +8,8 @@ primitive is drawn as a mesh addressing its paint layer instead (`primitive_uv`,
 A visual Cylinder, Capsule or Cone whose `side`, `top` or `bottom` is FALSE is a mesh of the
 parts left (`primitive_uv.open_revolution`); bounding objects keep every part, as ODE's do.
 
-Not honoured yet: `subdivision` of closed primitives (MuJoCo draws its own), Sphere `ico`, Plane `size` for collisions (Webots' plane is
-infinite there too), IndexedLineSet and PointSet (no geom).
+Not honoured yet: `subdivision` of closed primitives (MuJoCo draws its own), Sphere `ico`, Plane
+`size` for collisions (Webots' plane is infinite there too), IndexedLineSet and PointSet (no geom).
 """
 
 from __future__ import annotations

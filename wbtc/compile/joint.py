@@ -21,7 +21,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import device
-from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, info
+from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat, quat_conj, quat_rotate, quat_to_mat
 from wbtc.compile.table import RobotEntry
 from wbtc.scene.model import Node
@@ -42,13 +42,40 @@ def param(params: Node | None, type_name: str, name: str) -> object:
     return field.default if field is not None else None
 
 
+def slot_end(slot: Node, ctx: CompileContext) -> Node | None:
+    """What a Slot holds: its endPoint, unless that is a Slot of a type that does not pair with it.
+
+    Webots (WbNodeUtilities::isSlotTypeMatch) pairs two Slots when either type is empty, when their
+    types are equal, or, for gendered types ("wheel+", "wheel-"), when they differ by the gender
+    only; other pairs are refused and the inner Slot is left out.
+    """
+    end = slot.get("endPoint")
+    if not isinstance(end, Node) or end.base_type != "Slot":
+        return end if isinstance(end, Node) else None
+    first, second = str(slot.get("type") or ""), str(end.get("type") or "")
+    if slot_types_match(first, second):
+        return end
+    why = "have the same gender" if first == second else f"types '{first}' and '{second}' do not match"
+    ctx.warn(f"the two Slot nodes {why}: the inner Slot is left out, as Webots refuses it", end.span)
+    return None
+
+
+def slot_types_match(first: str, second: str) -> bool:
+    """Whether two Slots of these types pair (see `slot_end`)."""
+    if not first or not second:
+        return True
+    if first[-1] in "+-":
+        return first[:-1] == second[:-1] and first != second
+    return first == second
+
+
 def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,
               dynamic: bool) -> None:
     """Add a Joint node: its endPoint as a child body, the MuJoCo joint(s) on it, and its devices."""
     ctx = builder.ctx
     end = node.get("endPoint")
     while isinstance(end, Node) and end.base_type == "Slot":  # a Slot passes its endPoint on, in the same frame
-        end = end.get("endPoint")
+        end = slot_end(end, ctx)
     if isinstance(end, Node) and end.base_type == "SolidReference":
         ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
         return

@@ -97,8 +97,8 @@ class BodyBuilder:
         elif kind in ("DirectionalLight", "PointLight", "SpotLight"):
             light.add_light(node, body, frame, self.ctx)
         elif kind == "Slot":
-            end = node.get("endPoint")
-            if isinstance(end, Node):
+            end = joint.slot_end(node, self.ctx)
+            if end is not None:
                 self.walk(end, body, frame, robot, dynamic)
         elif kind == "Propeller":
             propeller.add_propeller(self, node, body, frame, robot)

@@ -795,8 +795,8 @@ NODES: tuple[NodeDecl, ...] = (
     ]),
     node("Slot", "other", [
         f("type", "SFString", '""'),
-        f("endPoint", "SFNode", "NULL", "vrmlField", accepts="solid other joint"),
-    ], doc="connects two nodes of the same slot type"),
+        f("endPoint", "SFNode", "NULL", "vrmlField", accepts="child"),
+    ], doc="connects two nodes of the same slot type; holds what its parent's field may hold"),
     node("SolidReference", "other", [
         f("solidName", "SFString", '""'),
     ], doc="reference to an existing Solid, used in a joint endPoint to close a loop"),
