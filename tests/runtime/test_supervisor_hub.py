@@ -524,3 +524,31 @@ DEF SUP Robot { supervisor TRUE }
     assert [round(float(hub.sim.model.geom_size[g][1]), 6) for g in cylinders] == [0.15]  # half of 0.3
     assert hub.call(sup, "getFromDef", ("STICK", -1))["id"] == stick
     sim.close()
+
+
+def test_a_plain_proto_keeps_its_inner_nodes_when_a_field_changes(tmp_path):
+    # Webots regenerates template PROTOs only: the inner nodes of a plain one stay the same nodes.
+    (tmp_path / "Arm.proto").write_text("""#VRML_SIM R2025a utf8
+PROTO Arm [ field SFVec3f offset 0 0 0 ]
+{ Solid { children [ DEF INNER Pose { translation IS offset children [ Shape { geometry Box { } } ] } ] } }
+""", encoding="utf-8")
+    world = tmp_path / "arm.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+EXTERNPROTO "Arm.proto"
+WorldInfo { }
+DEF ARM Arm { offset 1 0 0 }
+DEF SUP Robot { supervisor TRUE }
+""", encoding="utf-8")
+    scene, _ = load_world(world)
+    sim = Simulation(compile_scene(scene), noise=False)
+    hub, sup = SupervisorHub(sim, scene, world), sim.robots[0]
+    arm = hub.call(sup, "getFromDef", ("ARM", -1))["id"]
+    inner = hub.call(sup, "getFromDef", ("INNER", arm))["id"]
+    translation = hub.call(sup, "node.getField", (inner, "translation", False))
+    offset = hub.call(sup, "node.getField", (arm, "offset", False))
+    hub.queue(sup, "field.set", (offset["id"], -1, [0.0, 2.0, 0.0]))
+    assert hub.flush().rebuilt
+    assert hub.call(sup, "getFromDef", ("INNER", arm))["id"] == inner
+    assert hub.call(sup, "field.get", (translation["id"], -1)) == [0.0, 2.0, 0.0]
+    assert hub.call(sup, "node.getPosition", (inner,)) == [0.0, 2.0, 0.0]
+    sim.close()

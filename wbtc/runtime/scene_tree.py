@@ -66,6 +66,7 @@ class SceneTree:
     def refresh(self) -> None:
         """Give ids to nodes not seen yet (after an import) and recompute every parent."""
         self.parents = {}
+        self._frame_parents: dict[int, int] | None = None  # see `frame_parent`, found on demand
         self._pose_links = None
         for parent, node in self._edges(self.root, self.scene.nodes, hidden=True):
             if id(node) not in self.ids:
@@ -98,6 +99,40 @@ class SceneTree:
         """The node holding `node` (None for top-level nodes and the root)."""
         parent_id = self.parents.get(self.node_id(node))
         return None if parent_id in (None, ROOT_ID) else self.by_id[parent_id]
+
+    def frame_parent(self, node: Node) -> Node | None:
+        """The node whose frame `node` stands in.
+
+        That is `parent`, but for a PROTO parameter's node: the body node (a Pose, a Solid) its PROTO's
+        body puts it in, not the PROTO instance.
+        """
+        node_id = self.node_id(node)
+        if self._frame_parents is None:
+            self._frame_parents = self._find_frame_parents()
+        parent_id = self._frame_parents.get(node_id)
+        return None if parent_id in (None, ROOT_ID) else self.by_id[parent_id]
+
+    def _find_frame_parents(self) -> dict[int, int]:
+        """Node id -> frame parent id: the holder in the innermost PROTO body, the first one there.
+
+        A PROTO parameter's node is met as the instance's interface value, then in every body that
+        takes it by IS (several fields may take the same parameter: Webots places the node by the first).
+        """
+        found: dict[int, tuple[int, int]] = {}  # node id -> (body depth, parent id)
+
+        def walk(parent: Node, children: list, depth: int) -> None:
+            for child in children:
+                if not isinstance(child, Node) or id(child) not in self.ids:
+                    continue
+                known = found.get(self.ids[id(child)])
+                if known is None or depth > known[0]:
+                    found[self.ids[id(child)]] = (depth, self.ids[id(parent)])
+                walk(child, list(self.visible_children(child)), depth)
+                if child.proto is not None:
+                    walk(child, list(child.child_nodes()), depth + 1)
+
+        walk(self.root, self.scene.nodes, 0)
+        return {node_id: parent_id for node_id, (_, parent_id) in found.items()}
 
     def node_id(self, node: Node) -> int:
         """The id of a node (assigned on first sight)."""

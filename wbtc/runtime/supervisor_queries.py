@@ -38,7 +38,7 @@ def pose(sim: Simulation, tree: SceneTree, node: Node, op: str, relative_to: Nod
     """`getPosition` (3), `getOrientation` (9, row-major) or `getPose` (16, row-major 4x4) of `node`."""
     if not node.is_a("Pose"):  # Webots: a node that is no Pose (a Group, an Appearance) has no pose
         return [math.nan] * _POSE_SIZES[op]
-    rot, pos = poses.world_pose(sim, node, tree.parent)
+    rot, pos = poses.world_pose(sim, node, tree.frame_parent)
     if op == "getPosition":
         return [float(v) for v in pos]
     if op == "getOrientation":
@@ -46,7 +46,7 @@ def pose(sim: Simulation, tree: SceneTree, node: Node, op: str, relative_to: Nod
     matrix = np.eye(4)
     matrix[:3, :3], matrix[:3, 3] = rot, pos
     if relative_to is not None:
-        frot, fpos = poses.world_pose(sim, relative_to, tree.parent)
+        frot, fpos = poses.world_pose(sim, relative_to, tree.frame_parent)
         base = np.eye(4)
         base[:3, :3], base[:3, 3] = frot, fpos
         matrix = np.linalg.inv(base) @ matrix

@@ -42,7 +42,7 @@ class ViewpointFollow:
         self.solid = find_solid(tree, self.target) if self.target else None
         if self.solid is None:
             return
-        rot, pos = poses.world_pose(sim, self.solid, tree.parent)
+        rot, pos = poses.world_pose(sim, self.solid, tree.frame_parent)
         self.previous = pos.copy()
         self.reference_rotation = rot.copy()
         self.view_rotation = _rotation(self.viewpoint.get("orientation"))
@@ -54,7 +54,7 @@ class ViewpointFollow:
         """After a step: move the Viewpoint's fields as Webots does."""
         if self.solid is None:
             return
-        rot, pos = poses.world_pose(sim, self.solid, self.tree.parent)
+        rot, pos = poses.world_pose(sim, self.solid, self.tree.frame_parent)
         delta = pos - self.previous
         self.previous = pos.copy()
         kind = str(self.viewpoint.get("followType") or "Tracking Shot")
