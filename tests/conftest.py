@@ -8,6 +8,10 @@ from pathlib import Path
 
 import wbtc  # noqa: F401  (picks headless OpenGL before any test module imports MuJoCo)
 
+# The conformance ports are controllers that `wbtc run` starts, not test modules, whatever their names
+# (Webots names some test_*.py): pytest never imports them.
+collect_ignore_glob = ["conformance/*/controllers/*"]
+
 REPO = Path(__file__).resolve().parent.parent
 SHARED = REPO.parent / "shared"
 CORPUS = SHARED / "corpus"
