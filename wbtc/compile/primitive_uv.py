@@ -30,10 +30,11 @@ Cones and Planes, whose axis was y, as it does for MuJoCo primitives), (s, t) wi
 - ElevationGrid: the image over the whole grid, s along x, t along the second axis (y; z in
   pre-R2022a files).
 
-Cylinders and Cones have `subdivision` flat sides, as Webots draws them. Not honoured yet: Capsule and
-Sphere `subdivision`, Sphere `ico` (capsules have `SEGMENTS` sides, spheres `SEGMENTS` x `RINGS` faces), Cylinder and
-Cone `side`/`top`/`bottom` (always closed). (A TextureTransform is drawn into the layer by
-`paintable`.)
+Cylinders and Cones have `subdivision` flat sides, as Webots draws them. `open_revolution` draws a
+Cylinder, Capsule or Cone without the parts its `side`, `top` or `bottom` turn off (the shape as
+seen; the paint layer keeps every part). Not honoured yet: Sphere `subdivision` and `ico` (spheres
+have `SEGMENTS` x `RINGS` faces), a painted shape's open parts. (A TextureTransform is drawn into
+the layer by `paintable`.)
 """
 
 from __future__ import annotations
