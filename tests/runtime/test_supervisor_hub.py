@@ -546,8 +546,11 @@ DEF SUP Robot { supervisor TRUE }
     inner = hub.call(sup, "getFromDef", ("INNER", arm))["id"]
     translation = hub.call(sup, "node.getField", (inner, "translation", False))
     offset = hub.call(sup, "node.getField", (arm, "offset", False))
+    old_root = hub.tree.by_id[arm]
     hub.queue(sup, "field.set", (offset["id"], -1, [0.0, 2.0, 0.0]))
     assert hub.flush().rebuilt
+    # The replaced root's Python id is forgotten: a node made later at its address must not pass for it.
+    assert id(old_root) not in hub.tree.ids and hub.tree.by_id[arm] is not old_root
     assert hub.call(sup, "getFromDef", ("INNER", arm))["id"] == inner
     assert hub.call(sup, "field.get", (translation["id"], -1)) == [0.0, 2.0, 0.0]
     assert hub.call(sup, "node.getPosition", (inner,)) == [0.0, 2.0, 0.0]

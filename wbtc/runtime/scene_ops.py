@@ -173,6 +173,8 @@ def _replace(tree: SceneTree, old: Node, new: Node, keep_inside: bool = False) -
         tree.scene.nodes[:] = [new if item is old else item for item in tree.scene.nodes]
     else:
         _swap_inside(parent, old, new)
+    # The old root is dropped: its Python id may be reused by a node made later, which must not pass for it.
+    tree.ids.pop(id(old), None)
     tree.ids[id(new)] = node_id
     tree.by_id[node_id] = new
     moved = _carry_ids(tree, old, new) if keep_inside else None
