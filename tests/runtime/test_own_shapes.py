@@ -87,7 +87,7 @@ def test_ranges_match_casting_at_everything_while_the_robot_drives_and_the_turre
     hinge = next(j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE)
     limit = np.full(len(lidar.rays), lidar.max_range)
     every = np.arange(len(lidar.rays))
-    seen_fin = 0
+    seen_fin = full_casts = 0
     for k in range(60):
         data.qpos[free:free + 2] += (0.01, -0.005)  # drive
         if 20 <= k < 30:
@@ -100,7 +100,10 @@ def test_ranges_match_casting_at_everything_while_the_robot_drives_and_the_turre
         assert np.array_equal(np.isinf(own), np.isinf(everything)), k
         assert np.allclose(own, everything, rtol=0, atol=1e-12), k
         seen_fin += int(np.sum(np.abs(own - 0.14) < 0.02))
+        full_casts += lidar.caster._dist is None
     assert seen_fin > 0  # the turret's fin, 0.14 m away, is seen (and is what the turn moves)
+    # Casts at everything: the first scan and the ten scans the turret turned; driving moves no own shape.
+    assert full_casts == 11
 
 
 def test_a_still_scan_casts_one_batch_at_the_world(sim, monkeypatch):
