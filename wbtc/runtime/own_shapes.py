@@ -6,7 +6,7 @@ Those shapes move with the device, so along each of its rays the distance to the
 every scan, and casting at them again every scan is most of a scan's cost (a second batch for the
 rays they clip, and the Python that sorts those rays out). `OwnShapes` casts every ray at them once,
 then each scan casts only at the rest of the world with them hidden and takes the nearer of the
-two per ray. This is exact (to the 1e-7 m or rad the own shapes may move unnoticed, `_STILL`):
+two per ray. This is exact, but for the 1e-5 m or rad the own shapes may move unnoticed (`_STILL`):
 whether a surface point is seen (a front face beyond `near`) does not
 depend on the other shapes, so the first one seen along a ray is the nearer of the first one among
 the device's own shapes and the first one among the others.
@@ -35,10 +35,11 @@ if TYPE_CHECKING:
 
 #: How far the own shapes are looked for along a ray (m): they are on the device's own robot.
 _OWN_REACH = 1000.0
-#: Relative poses (m, and rotation matrix entries) that differ by less are the same. Recomputed from
-#: the bodies' world poses at every step, a rigid part's pose relative to the device drifts by up to
-#: 1e-8 with the rounding of a moving robot's transforms; a real move is far larger.
-_STILL = 1e-7
+#: Relative poses (m, and rotation matrix entries) that differ by less are the same: a rigid part's pose
+#: relative to the device drifts by up to 1e-8 with the rounding of a moving robot's transforms, and a
+#: servo-held turret jitters by up to 2e-6 (the TurtleBot3's LDS-01 turning); the ranges to own shapes
+#: are then kept, at most that far from a fresh cast, far below any lidar's resolution.
+_STILL = 1e-5
 
 
 class OwnShapes:
