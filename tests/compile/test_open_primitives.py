@@ -39,9 +39,11 @@ def test_parts_turned_off_are_not_drawn_and_bounding_objects_stay_whole(tmp_path
     assert kinds == [mujoco.mjtGeom.mjGEOM_MESH] * 3 + [mujoco.mjtGeom.mjGEOM_CYLINDER]
     tube, caps, cone = (_mesh_vertices(model, g) for g in visual[:3])
     # The capsule's tube alone: every vertex on the radius, none beyond the cylinder's ends.
-    assert np.allclose(np.hypot(tube[:, 0], tube[:, 1]), 0.1) and np.abs(tube[:, 2]).max() <= 0.2 + 1e-6  # float32 vertices
+    assert np.allclose(np.hypot(tube[:, 0], tube[:, 1]), 0.1)
+    assert np.abs(tube[:, 2]).max() <= 0.2 + 1e-6  # float32 vertices
     # The cylinder's two caps alone: vertices at z = +-0.2 only (rims and centres), 8 sides each.
-    assert np.allclose(np.abs(caps[:, 2]), 0.2) and np.isclose(np.hypot(caps[:, 0], caps[:, 1]).max(), 0.1)
+    assert np.allclose(np.abs(caps[:, 2]), 0.2)
+    assert np.isclose(np.hypot(caps[:, 0], caps[:, 1]).max(), 0.1)
     # The cone's side alone: nothing on its base but the rim.
     base = cone[np.isclose(cone[:, 2], cone[:, 2].min())]
     assert np.allclose(np.hypot(base[:, 0], base[:, 1]), 0.1)
