@@ -56,6 +56,9 @@ def add_light(node: Node, body: mujoco.MjsBody, frame: Frame, ctx: CompileContex
         ctx.table.light_boost[light.name] = intensity / cap
     light.ambient = np.clip(colour * float(node.get("ambientIntensity")) * MATERIAL_AMBIENT, 0.0, 1.0)
     light.castshadow = bool(node.get("castShadows"))
+    if kind in ("DirectionalLight", "SpotLight"):
+        # Webots' LightSensor takes this field as written, in world axes, whatever turns the light.
+        ctx.table.light_directions[light.name] = tuple(float(v) for v in node.get("direction"))
     if kind == "DirectionalLight":
         light.type = mujoco.mjtLightType.mjLIGHT_DIRECTIONAL
         light.dir = _unit(frame.rotate(np.asarray(node.get("direction"), dtype=float)))

@@ -192,6 +192,8 @@ class DeviceTable:
     infrared: dict[str, float] = field(default_factory=dict)
     camera_light: dict[str, tuple[float, float]] = field(default_factory=dict)
     light_boost: dict[str, float] = field(default_factory=dict)
+    # SpotLight and DirectionalLight `direction` fields as written, by light name (LightSensors read them so).
+    light_directions: dict[str, tuple[float, float, float]] = field(default_factory=dict)
     # (asymmetric ContactLaws, their geoms' materials by geom name): see wbtc.compile.contact.
     asymmetric_friction: tuple[list[Any], dict[str, str]] | None = None
     tracks: list[Any] = field(default_factory=list)

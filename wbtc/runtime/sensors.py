@@ -317,7 +317,9 @@ class LightSensor(Sensor):
     (diffuse = colour × intensity, ambient = colour × ambientIntensity × 0.2, see
     `wbtc.compile.light`), so intensities above 1 are clipped and a spot's beamWidth comes back
     from its exponent. `occlusion` blocks the direct part with bounding objects in the way (the
-    sensor's own robot excepted).
+    sensor's own robot excepted). A SpotLight's beam and a DirectionalLight's direction are their
+    `direction` fields as written, in world axes, not turned by the Solids holding the light: Webots'
+    WbLightSensor reads the field so (a quirk kept: a robot's headlight lights sensors as if unturned).
     """
 
     def __init__(self, entry: DeviceEntry, sim: Simulation, skip_bodies: frozenset[int]) -> None:
@@ -326,6 +328,13 @@ class LightSensor(Sensor):
         self.occlusion = bool(entry.fields.get("occlusion", False))
         self.filter = np.asarray(entry.fields.get("colorFilter", [1.0, 1.0, 1.0]), dtype=float)
         self.resolution = float(entry.fields.get("resolution", -1.0))
+        self._written: tuple[Any, dict[int, np.ndarray]] = (None, {})  # (model, written directions)
+
+    def _written_directions(self, sim: Simulation) -> dict[int, np.ndarray]:
+        """The lights' written directions of the current model (a supervisor's recompile makes another)."""
+        if self._written[0] is not sim.model:
+            self._written = (sim.model, _written(sim))
+        return self._written[1]
 
     def sample(self, sim: Simulation) -> float:
         """The lights' irradiance through the lookup table."""
@@ -333,12 +342,13 @@ class LightSensor(Sensor):
         axis = mat[:, 0]
         model = sim.model
         rgb = np.zeros(3)
+        written = self._written_directions(sim)
         for i in range(model.nlight):
             if not model.light_active[i]:
                 continue
             spot = 1.0
             if model.light_type[i] == mujoco.mjtLightType.mjLIGHT_DIRECTIONAL:
-                to_light, dist, att = -sim.data.light_xdir[i], 1000.0, 1.0  # Webots puts it 1 km away
+                to_light, dist, att = -written.get(i, sim.data.light_xdir[i]), 1000.0, 1.0  # Webots: 1 km away
             else:
                 delta = sim.data.light_xpos[i] - pos
                 dist = float(np.linalg.norm(delta))
@@ -347,7 +357,7 @@ class LightSensor(Sensor):
                 denominator = a[0] + a[1] * dist + a[2] * dist * dist
                 att = 1.0 / denominator if denominator > 0 else 1.0
                 if model.light_type[i] == mujoco.mjtLightType.mjLIGHT_SPOT:
-                    spot = _spot_factor(model, i, float(np.dot(to_light, -sim.data.light_xdir[i])))
+                    spot = _spot_factor(model, i, float(np.dot(to_light, -written.get(i, sim.data.light_xdir[i]))))
             cos = float(np.dot(axis, to_light))
             direct = cos * spot if cos > 0 else 0.0
             if direct > 0 and self.occlusion:
@@ -355,6 +365,17 @@ class LightSensor(Sensor):
                 direct = 0.0 if math.isfinite(hit) else direct
             rgb += att * (model.light_ambient[i] / MATERIAL_AMBIENT + model.light_diffuse[i] * direct)
         return apply(self.table, float(rgb @ self.filter) / 3.0, sim.noise_rng, self.resolution)
+
+
+def _written(sim: Simulation) -> dict[int, np.ndarray]:
+    """By light id: its `direction` as written, in model axes, unit length (see `LightSensor`)."""
+    found = {}
+    for name, direction in sim.table.light_directions.items():
+        vector = sim.to_model @ np.asarray(direction, dtype=float)
+        norm = float(np.linalg.norm(vector))
+        if norm > 0:
+            found[sim.model.light(name).id] = vector / norm
+    return found
 
 
 def _spot_factor(model: mujoco.MjModel, light: int, cos_alpha: float) -> float:
