@@ -145,3 +145,26 @@ Thymio2 {
     assert y == pytest.approx(9.81 * 32 / 13.65, rel=0.02)
     assert abs(x) < 0.5 and abs(z) < 0.5
     sim.close()
+
+
+def test_webots_6_e_puck_distance_sensors_of_a_world_s_own_robot_look_out_tilted_up(tmp_path):
+    # A V6 world's own e-puck (y up, forward -z) with two sensors of Webots 6's library name.
+    world = """#VRML_SIM V6.0 utf8
+WorldInfo { }
+DifferentialWheels {
+  children [
+    EPuck_DistanceSensor { translation 0.01 0.033 -0.03 rotation 0 1 0 1.27 name "ps0" }
+    EPuck_DistanceSensor { translation 0.031 0.033 0 name "ps2" }
+  ]
+  controller "<none>"
+}
+"""
+    simulation = simulation_of(tmp_path, world, "v6.wbt")
+    sensors = {s.entry.name: s for s in simulation.robots[0].sensors.values()}
+    assert sorted(sensors) == ["ps0", "ps2"]
+    _, right = sensors["ps2"].frame(simulation)
+    # An old world's axes are NUE: its +x (north; the e-puck's right) is wbtc's +y. ps2 looks there,
+    # 0.16 rad above the horizon.
+    assert right[:, 0] == pytest.approx([0.0, np.cos(0.16), np.sin(0.16)], abs=1e-6)
+    assert sensors["ps0"].kind == "infra-red"  # the e-puck's, with its lookup table
+    simulation.close()
