@@ -208,10 +208,8 @@ def _swap_inside(root: Node, old: Node, new: Node) -> None:
         if id(node) in seen:
             continue
         seen.add(id(node))
-        levels, instance = [node.fields], node.proto
-        while instance is not None:  # a derived PROTO keeps each level's values
-            levels.append(instance.values)
-            instance = instance.inner
+        # A derived PROTO keeps each level's values.
+        levels = [node.fields] + ([level.values for level in _levels(node.proto)] if node.proto else [])
         for fields in levels:
             for name, value in fields.items():
                 if value is old:

@@ -316,7 +316,8 @@ class SupervisorHub:
             self.sim.data.xfrc_applied[body] = 0.0
         self.applied_forces = []
         self.recordings.after_step(self.sim)
-        self._follow().step(self.sim, self.sim.step_ms / 1000.0)
+        if self._follower is not None:  # made again in `flush`, where the scene may change
+            self._follower.step(self.sim, self.sim.step_ms / 1000.0)
 
     def _follow(self) -> ViewpointFollow:
         """The Viewpoint's follower (made again when the scene, its Viewpoint or what it follows changed)."""

@@ -22,7 +22,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from wbtc.compile.frames import axis_angle_quat, mat_to_quat, quat_to_axis_angle
+from wbtc.compile.frames import axis_angle_quat, mat_to_quat, quat_to_axis_angle, quat_to_mat
+from wbtc.compile.solid import world_viewpoint
 from wbtc.runtime import poses
 from wbtc.runtime.scene_tree import store_pose, to_typed
 
@@ -37,7 +38,7 @@ class ViewpointFollow:
 
     def __init__(self, tree: SceneTree, sim: Simulation) -> None:
         self.tree = tree
-        self.viewpoint = next((n for n in tree.scene.nodes if n.base_type == "Viewpoint"), None)
+        self.viewpoint = world_viewpoint(tree.scene)
         self.target = str(self.viewpoint.get("follow") or "") if self.viewpoint is not None else ""
         self.solid = find_solid(tree, self.target) if self.target else None
         if self.solid is None:
@@ -45,7 +46,8 @@ class ViewpointFollow:
         rot, pos = poses.world_pose(sim, self.solid, tree.frame_parent)
         self.previous = pos.copy()
         self.reference_rotation = rot.copy()
-        self.view_rotation = _rotation(self.viewpoint.get("orientation"))
+        r = [float(v) for v in self.viewpoint.get("orientation")]
+        self.view_rotation = quat_to_mat(axis_angle_quat((r[0], r[1], r[2]), r[3]))
         self.offset = np.asarray(self.viewpoint.get("position"), dtype=float) - pos
         self.equilibrium = np.zeros(3)
         self.velocity = np.zeros(3)
@@ -102,7 +104,7 @@ class ViewpointFollow:
 
 def current_follower(follower: ViewpointFollow | None, tree: SceneTree, sim: Simulation) -> ViewpointFollow:
     """`follower`, or a new one when the scene, its Viewpoint or what the Viewpoint follows changed."""
-    viewpoint = next((n for n in tree.scene.nodes if n.base_type == "Viewpoint"), None)
+    viewpoint = world_viewpoint(tree.scene)
     target = str(viewpoint.get("follow") or "") if viewpoint is not None else ""
     same = follower is not None and follower.tree is tree and follower.viewpoint is viewpoint
     return follower if same and follower.target == target else ViewpointFollow(tree, sim)
@@ -122,12 +124,3 @@ def find_solid(tree: SceneTree, unique_name: str) -> Node | None:
         if path == wanted:
             return node
     return None
-
-
-def _rotation(rotation: object) -> np.ndarray:
-    """The rotation matrix of an axis-angle field value."""
-    r = [float(v) for v in rotation]  # type: ignore[attr-defined]
-    w, x, y, z = axis_angle_quat((r[0], r[1], r[2]), r[3])
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
