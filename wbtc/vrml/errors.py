@@ -108,6 +108,11 @@ def _not_a_value(text: str, token: lark.Token, path: str) -> WbtSyntaxError:
     if word.group()[0].isupper():
         return WbtSyntaxError(f"expected '{{' after node type {word.group()}, found {_describe(token)}",
                               Span(path, token.line, token.column))
+    still_open = open_brackets(text, word.start())
+    if still_open and still_open[-1].char == "[":  # a field name inside a list: the list was not closed
+        opener = still_open[-1]
+        return WbtSyntaxError(f"'{word.group()}' cannot be an item of the list opened at line {opener.line}", span,
+                              hint=_unclosed_hint(text, word.start()))
     return WbtSyntaxError(f"'{word.group()}' is not a field value", span,
                           hint="write the value right after the field name, e.g. name \"gps\"")
 
