@@ -36,6 +36,19 @@ class Xvfb:
         self.env = {**os.environ, "DISPLAY": self.display}
         self.env.pop("MUJOCO_GL", None)  # the window renders through GLX on this display
         self.env.pop("PYOPENGL_PLATFORM", None)
+        self._wait_for_clients(timeout=10.0)
+
+    def _wait_for_clients(self, timeout: float) -> None:
+        """Wait until an X client can talk to the display (a CI run once saw 'Failed to open display :0'
+        right after Xvfb had written its number)."""
+        deadline = time.monotonic() + timeout
+        while True:
+            done = subprocess.run(["xdotool", "getdisplaygeometry"], env=self.env, capture_output=True, timeout=30)
+            if done.returncode == 0:
+                return
+            if time.monotonic() > deadline or self.process.poll() is not None:
+                raise RuntimeError(f"Xvfb on {self.display} accepts no client: {done.stderr.decode().strip()}")
+            time.sleep(0.1)
 
     def tool(self, *args: str) -> str:
         """Run an X client (xdotool, xwd) on this display; its stdout."""
