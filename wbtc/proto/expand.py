@@ -27,7 +27,7 @@ from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.proto.template_render import render_body, template_context
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.legacy_nodes import convert_differential_wheels
-from wbtc.scene.model import Node, Scene, walk
+from wbtc.scene.model import Node, Scene, tree_edges, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import before_r2022a
@@ -52,7 +52,13 @@ class Expander:
         self._memo: dict[int, tuple[Node, Node | None]] = {}
         self._resolvers: dict[Path, Resolver] = {}
         self._depth = 0
-        self._next_id = 1
+        self.last_context_id = 1  # the last `context.id` given to a nested instance
+        #: The `context.id` an instance node's template gets when known beforehand: a top-level
+        #: node's place in the scene's numbering, a regenerated node's id. A nested instance takes
+        #: the next number after `last_context_id`.
+        self.context_ids: dict[int, int] = {}
+        #: The ids the templates that read `context.id` were given: their nodes must get them.
+        self.claims: dict[int, int] = {}
         self._instances: dict[int, ProtoInstance] = {}  # id of an instance node -> what it expanded to
 
     # --- traversal -----------------------------------------------------------------------------
@@ -150,7 +156,7 @@ class Expander:
             apply_hidden(expanded, node.hidden, set(model.fields))
         if expanded is not None:
             info = ProtoInstance(node.type_name, source, values, node.span, node.def_name, expanded.proto,
-                                 links=node.links)
+                                 links=node.links, context_id=self.claims.get(id(node)))
             self._instances[id(node)] = info
             expanded.proto = info
             if node.def_name is not None:
@@ -284,8 +290,15 @@ class Expander:
     # --- templates (see `template_render`) -------------------------------------------------------
 
     def _render(self, model: ProtoModel, fields: dict[str, dict[str, Any]], node: Node) -> list[s.NodeSyntax | s.Use]:
-        self._next_id += 1
-        context = template_context(model, self.world_path, self.scene, self._next_id)
+        # Webots gives a template the id of the node it makes (`context.id`), which the supervisor
+        # API returns for that node: the scene tree gives the node this number (`SceneTree.refresh`).
+        context_id = self.context_ids.get(id(node))
+        if context_id is None:
+            self.last_context_id += 1
+            context_id = self.context_ids[id(node)] = self.last_context_id
+        if "context.id" in (model.syntax.template or ""):
+            self.claims[id(node)] = context_id
+        context = template_context(model, self.world_path, self.scene, context_id)
         return render_body(model, fields, node, context, self.result.console)
 
 
@@ -312,11 +325,14 @@ def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:
     """
     expander = Expander(scene, strict)
     resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
-    nodes = []
+    nodes: list[Node] = []
+    numbered: set[int] = set()  # the nodes numbered so far, as the supervisor API numbers them (root 0)
     for node in scene.nodes:
+        expander.context_ids.setdefault(id(node), len(numbered) + 1)
         expanded = expander.expand(node, resolver, top_level=True)
         if expanded is not None:
             nodes.append(expanded)
+            numbered |= {id(n) for _, n in tree_edges(None, [expanded])}
     result = expander.result
     if result.errors:
         raise ProtoError("", diagnostics=result.errors[:40])

@@ -38,6 +38,15 @@ class ProtoInstance:
     links: dict[str, str] | None = None
     #: The instance (one level of a PROTO chain) whose body holds this one; None in the world itself.
     owner: ProtoInstance | None = None
+    #: The `context.id` this level's template was rendered with: the node id the instance gets.
+    context_id: int | None = None
+
+    def claimed_id(self) -> int | None:
+        """The node id a template claimed by reading `context.id` (the first level that did)."""
+        level: ProtoInstance | None = self
+        while level is not None and level.context_id is None:
+            level = level.inner
+        return level.context_id if level is not None else None
 
 
 @dataclass(slots=True)

@@ -30,7 +30,8 @@ _FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
 
 
 @lru_cache(maxsize=256)
-def _fields_read(template: str) -> frozenset[str]:
+def fields_read(template: str) -> frozenset[str]:
+    """The fields a template's code reads (`fields.NAME`): Webots regenerates it when one changes."""
     return frozenset(_FIELD_NAMES.findall(template))
 
 
@@ -63,7 +64,7 @@ def render_body(model: ProtoModel, fields: dict[str, dict[str, Any]], node: Node
     assert span is not None and model.syntax.template is not None
     # Everything the template can read is in the key: the fields it names and the whole context (the
     # world's version, axes and paths), the instance id only when the template reads it.
-    read = _fields_read(model.syntax.template)
+    read = fields_read(model.syntax.template)
     shared = {k: v for k, v in context.items() if k != "id"}
     key = (model.path, json.dumps({k: v for k, v in fields.items() if k in read}, sort_keys=True, default=str),
            json.dumps(shared, sort_keys=True, default=str), "context.id" in model.syntax.template and context["id"])

@@ -3,8 +3,11 @@
 Edits change the expanded scene in place; the supervisor then recompiles it. A PROTO instance is
 its expanded root node with `node.proto` holding the interface values: changing one of those
 values expands the PROTO anew from them (`reexpand`) and puts the new root where the old one was,
-under the same node id. Imported VRML text is parsed, typed and expanded like a world's nodes,
-with the world's PROTO resolver.
+under the same node id. Webots regenerates a template PROTO only for a field its code reads
+(`regenerates`): its nodes are made anew (a robot among them restarts its controller, old internal
+node references die, and so does every PROTO-internal field reference the controllers hold, as
+libController drops them); any other change keeps the nodes inside with their ids. Imported VRML
+text is parsed, typed and expanded like a world's nodes, with the world's PROTO resolver.
 
 Not honoured yet: importing into a field of a node hidden inside a PROTO instance; USE of DEF
 names of the world inside imported text.
@@ -20,6 +23,7 @@ from wbtc.proto.expand import Expander
 from wbtc.proto.instances import ProtoInstance, Typed
 from wbtc.proto.model import load_proto
 from wbtc.proto.resolve import Resolver
+from wbtc.proto.template_render import fields_read
 from wbtc.runtime.scene_tree import FieldRef, SceneTree, items_of, to_typed
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.model import Node
@@ -80,6 +84,7 @@ def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Nod
     if not built:
         raise WbtcError("the text holds no node")
     expander = Expander(scene)
+    expander.last_context_id = max(tree.by_id)  # templates' `context.id`s after every id in use
     resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
     nodes = []
     for raw in built if ref.type != "SFNode" else built[:1]:
@@ -104,8 +109,17 @@ def import_node(tree: SceneTree, ref: FieldRef, position: int, text: str) -> Nod
     return nodes[0]
 
 
-def reexpand(tree: SceneTree, node: Node) -> Node:
-    """Expand a PROTO instance anew from its (changed) interface values; same id, same place."""
+def reexpand(tree: SceneTree, node: Node, regenerate: bool | None = None, forget: bool = False) -> Node:
+    """Expand a PROTO instance anew from its (changed) interface values; same id, same place.
+
+    Args:
+        tree: the scene tree holding `node`.
+        node: the instance's root node.
+        regenerate: whether Webots makes the instance's nodes anew (see `regenerates`); None: when
+            any of its PROTO levels is a template.
+        forget: a regenerated instance's old internal nodes lose their ids, as Webots deletes them
+            when a supervisor's write regenerates it (a reset keeps them: its values are copies).
+    """
     info = node.proto
     model = load_proto(info.source.path)
     raw = Node(info.name, info.span, None, info.def_name)
@@ -113,13 +127,34 @@ def reexpand(tree: SceneTree, node: Node) -> Node:
                   if name in model.fields}
     scene = tree.scene
     expander = Expander(scene)
+    # The regenerated node keeps its id, which its template reads again as `context.id`; templates
+    # inside it are numbered after every id in use.
+    expander.context_ids[id(raw)] = tree.node_id(node)
+    expander.last_context_id = max(tree.by_id)
     resolver = Resolver(Path(scene.path), scene.externprotos, Path(scene.path))
     new = expander.expand(raw, resolver, top_level=True)
     if new is None or expander.result.errors:
         raise WbtcError(f"PROTO {info.name} cannot be expanded with the new values")
-    regenerated = any(load_proto(level.source.path).is_template for level in _levels(info))
-    _replace(tree, node, new, keep_inside=not regenerated)
+    if regenerate is None:
+        regenerate = any(load_proto(level.source.path).is_template for level in _levels(info))
+    _replace(tree, node, new, keep_inside=not regenerate, forget=forget)
     return new
+
+
+def regenerates(node: Node, field: str) -> bool:
+    """Whether a change of an instance's interface field makes Webots regenerate it.
+
+    Webots regenerates a template PROTO when a field its code reads changes (at any level of a
+    derived PROTO: the field passed on by IS); a field only used by IS is passed to the nodes.
+    """
+    names = {field}
+    for level in _levels(node.proto) if node.proto is not None else []:
+        if level is not node.proto:  # this level's fields that take the names of the level above by IS
+            names = {own for own, outer in (level.links or {}).items() if outer in names}
+        model = load_proto(level.source.path)
+        if model.is_template and names & fields_read(model.syntax.template or ""):
+            return True
+    return False
 
 
 def _levels(info: ProtoInstance) -> list[ProtoInstance]:
@@ -160,7 +195,7 @@ def _retarget(tree: SceneTree, ref: FieldRef, node: Node) -> None:
     tree.field_keys[(id(node), ref.name, ref.proto)] = ref.id
 
 
-def _replace(tree: SceneTree, old: Node, new: Node, keep_inside: bool = False) -> None:
+def _replace(tree: SceneTree, old: Node, new: Node, keep_inside: bool = False, forget: bool = False) -> None:
     """Put `new` where `old` is, with its id.
 
     A template PROTO (at any level) is regenerated: references to its internal nodes and fields
@@ -191,7 +226,30 @@ def _replace(tree: SceneTree, old: Node, new: Node, keep_inside: bool = False) -
         elif ref.id not in tree.dead_fields:
             tree.dead_fields.append(ref.id)
             tree.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
+    if moved is None and forget:
+        _forget_internals(tree, old, new)
     tree.refresh()
+
+
+def _forget_internals(tree: SceneTree, old: Node, new: Node) -> None:
+    """What a supervisor's regeneration of a PROTO makes invalid, as Webots and its controller library do.
+
+    Webots deletes the regenerated instance's old internal nodes: references to them become invalid
+    (nodes given as parameters are the same objects in the new instance and stay). And the controller
+    library, told that a node was regenerated, drops every PROTO-internal field reference it holds,
+    of any PROTO (libController's `remove_internal_proto_nodes_and_fields_from_list`): they have to
+    be looked up again.
+    """
+    kept = {id(n) for n in _inside(tree, new)}
+    for gone in _inside(tree, old):
+        if id(gone) not in kept and id(gone) in tree.ids:
+            tree.by_id.pop(tree.ids.pop(id(gone)), None)
+    visible = {id(n) for _, n in tree._edges(tree.root, tree.scene.nodes, hidden=False)}
+    for ref in tree.fields:
+        internal = not ref.proto and (ref.node.proto is not None or id(ref.node) not in visible)
+        if internal and ref.id not in tree.dead_fields:
+            tree.dead_fields.append(ref.id)
+            tree.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
 
 
 def _swap_inside(root: Node, old: Node, new: Node) -> None:

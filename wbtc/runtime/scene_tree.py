@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from wbtc.proto.model import load_proto
-from wbtc.scene.model import Node, Scene
+from wbtc.scene.model import Node, Scene, tree_edges
 from wbtc.vrml.values import _TUPLES
 
 #: Webots' field type codes (WB_SF_*; WB_MF_* = WB_SF_* | 0x10).
@@ -68,22 +68,26 @@ class SceneTree:
         self.parents = {}
         self._frame_parents: dict[int, int] | None = None  # see `frame_parent`, found on demand
         self._pose_links = None
-        for parent, node in self._edges(self.root, self.scene.nodes, hidden=True):
+        edges = list(self._edges(self.root, self.scene.nodes, hidden=True))
+        # A template PROTO's node takes the id its template was given as `context.id`, as in Webots.
+        claimed = {id(node): number for _, node in edges if id(node) not in self.ids
+                   and node.proto is not None
+                   and (number := node.proto.claimed_id()) is not None and number not in self.by_id}
+        taken = set(claimed.values())
+        for parent, node in edges:
             if id(node) not in self.ids:
-                new = max(self.by_id) + 1
+                new = claimed.get(id(node))
+                if new is None:
+                    new = max(self.by_id) + 1
+                    while new in taken:
+                        new += 1
                 self.ids[id(node)] = new
                 self.by_id[new] = node
             self.parents.setdefault(self.ids[id(node)], self.ids[id(parent)])
 
     def _edges(self, parent: Node, children: list, hidden: bool) -> Iterator[tuple[Node, Node]]:
         """(parent, child) pairs depth first, in file order; `hidden` also enters PROTO internals."""
-        for child in children:
-            if not isinstance(child, Node):
-                continue
-            yield parent, child
-            yield from self._edges(child, list(self.visible_children(child)), hidden)
-            if hidden and child.proto is not None:
-                yield from self._edges(child, list(child.child_nodes()), hidden)
+        return tree_edges(parent, children, hidden)
 
     def visible_children(self, node: Node) -> Iterator[Node]:
         """The nodes a supervisor reaches from `node` through its fields."""

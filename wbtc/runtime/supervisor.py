@@ -84,6 +84,7 @@ class SupervisorHub:
         self.options = options or CompileOptions()
         self.tree = sim.tree = SceneTree(scene)
         self.pending: list[tuple[RobotState, str, tuple]] = []
+        self._regenerated: set[int] = set()  # template instances a write regenerates (see `flush`)
         self.quit_status: int | None = None
         self.mode = 1
         self.applied_forces: list[int] = []
@@ -220,7 +221,8 @@ class SupervisorHub:
             else:
                 self._reload()
         elif dirty:
-            self._recompile(dirty)
+            outcome.restart += supervisor_world.recompile(self, dirty, self._regenerated)
+            self._regenerated.clear()
             outcome.rebuilt = True
         self._follow()  # a regenerated Viewpoint follows on from where it is, before the next step
         changes = self.changes
@@ -368,6 +370,8 @@ class SupervisorHub:
         else:
             raise SupervisorError(f"Warning: field {op}() is not supported by wbtc yet; ignored.")
         dirty.add(owner)
+        if ref.proto == 1 and scene_ops.regenerates(ref.node, ref.name):
+            self._regenerated.add(owner)
 
     def _push_custom_data(self, node: Node, data: str) -> None:
         """A robot whose customData a supervisor wrote reads it from its next step (Webots' getCustomData)."""
@@ -387,9 +391,6 @@ class SupervisorHub:
         self.world = path
 
     # -- recompiling, reset, reload (see `supervisor_world`) ----------------------------------------
-    def _recompile(self, dirty: set[int]) -> None:
-        supervisor_world.recompile(self, dirty)
-
     def _reset(self) -> None:
         supervisor_world.reset(self)
 

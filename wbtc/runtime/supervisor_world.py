@@ -24,19 +24,36 @@ from wbtc.runtime.reset import Initial
 from wbtc.runtime.scene_tree import FieldRef, SceneTree
 
 if TYPE_CHECKING:
+    from wbtc.runtime.simulation import RobotState
     from wbtc.runtime.supervisor import SupervisorHub
 
 
-def recompile(hub: SupervisorHub, dirty: set[int]) -> None:
-    """Expand anew the PROTO instances whose fields changed, compile the scene, carry the state over."""
+def recompile(hub: SupervisorHub, dirty: set[int], regenerated: set[int]) -> list[RobotState]:
+    """Expand anew the PROTO instances whose fields changed, compile the scene, carry the state over.
+
+    Args:
+        hub: the supervisors' hub.
+        dirty: the ids of the nodes whose fields changed.
+        regenerated: the ids of the template PROTO instances Webots regenerates for those changes
+            (`scene_ops.regenerates`).
+
+    Returns:
+        The robots a template PROTO regenerated: Webots makes them anew, so their controllers
+        start again.
+    """
     tree = hub.tree
+    remade: set[int] = set()
     for node_id in sorted(dirty):
         node = tree.by_id.get(node_id)
         if node is not None and node.proto is not None:
-            scene_ops.reexpand(tree, node)
+            regenerate = node_id in regenerated
+            new = scene_ops.reexpand(tree, node, regenerate=regenerate, forget=True)
+            if regenerate:
+                remade |= {id(new)} | {id(n) for _, n in tree._edges(new, list(new.child_nodes()), True)}
     tree.refresh()
     result = compile_scene(tree.scene, hub.options)
     swap_model(hub.sim, result)
+    return [robot for robot in hub.sim.robots if id(robot.entry.node) in remade]
 
 
 def reset(hub: SupervisorHub) -> None:

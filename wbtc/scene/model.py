@@ -84,6 +84,25 @@ class Node:
         return f"<{prefix}{self.type_name} at {self.span}>"
 
 
+def tree_edges(parent: Any, children: list, hidden: bool = True) -> Iterator[tuple[Any, Node]]:
+    """(parent, child) pairs depth first in file order, as a supervisor walks the scene.
+
+    A PROTO instance's interface values come first, then (with `hidden`) the nodes of its body.
+    This order numbers the nodes (`wbtc.runtime.scene_tree.SceneTree` ids).
+    """
+    for child in children:
+        if not isinstance(child, Node):
+            continue
+        yield parent, child
+        if child.proto is not None:
+            yield from tree_edges(child, [n for value in child.proto.values.values() for n in _nodes_in(value)],
+                                  hidden)
+            if hidden:
+                yield from tree_edges(child, list(child.child_nodes()), hidden)
+        else:
+            yield from tree_edges(child, list(child.child_nodes()), hidden)
+
+
 def _nodes_in(value: Any) -> Iterator[Node]:
     if isinstance(value, Node):
         yield value
