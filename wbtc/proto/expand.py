@@ -78,6 +78,9 @@ class Expander:
         known = self._memo.get(key)
         if known is not None and known[0] is node:
             return known[1]
+        if node.pending_use is not None:  # left by `_bind_defaults` when no default DEF has the name
+            self.result.errors.append(Diagnostic(f"USE {node.pending_use} refers to no DEF before it", node.span))
+            return None
         if node.is_proto:
             if top_level:
                 self.result.counts[node.type_name] += 1
@@ -133,6 +136,7 @@ class Expander:
                         top_level: bool) -> Node | None:
         proto_resolver = self.resolver_for(model)
         values, defaults = self._values(node, model, resolver, proto_resolver)
+        _bind_defaults(node, model, values)
         self._old_size(node, model, source, values)
         fields = self._template_fields(model, values, defaults, resolver) if model.is_template else None
         for name, value in values.items():
@@ -308,6 +312,40 @@ def _one_element(value: Any, mf_type: str) -> Any:
     if mf_type in ("MFString", "MFBool", "MFNode"):
         return [value]
     return np.asarray([value], dtype=np.int64 if mf_type == "MFInt32" else np.float64)
+
+
+def _bind_defaults(node: Node, model: ProtoModel, values: dict[str, Any]) -> None:
+    """Bind the USEs written in an instance's fields to DEFs in the default values of earlier fields.
+
+    Webots gives an instance its fields in the PROTO's interface order, an omitted field taking its
+    default, whose DEF names the fields after it may USE.
+    """
+    defs: dict[str, Node] = {}
+    seen: set[int] = set()
+
+    def bind(value: Any) -> Any:
+        if isinstance(value, list):
+            return [bind(item) for item in value]
+        if not isinstance(value, Node):
+            return value
+        if value.pending_use is not None:
+            return defs.get(value.pending_use, value)
+        if id(value) not in seen:
+            seen.add(id(value))
+            for name, inner in value.fields.items():
+                value.fields[name] = bind(inner)
+        return value
+
+    for name in model.fields:
+        if name in node.fields:
+            values[name] = bind(values[name])
+        else:
+            defs.update((n.def_name, n) for n in walk(_nodes_of(values[name])) if n.def_name)
+
+
+def _nodes_of(value: Any) -> list[Node]:
+    return [value] if isinstance(value, Node) else [v for v in value if isinstance(v, Node)] \
+        if isinstance(value, list) else []
 
 
 def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:

@@ -226,7 +226,7 @@ def _replace(tree: SceneTree, old: Node, new: Node, keep_inside: bool = False, f
         elif ref.id not in tree.dead_fields:
             tree.dead_fields.append(ref.id)
             tree.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
-    if moved is None and forget:
+    if forget and not keep_inside:
         _forget_internals(tree, old, new)
     tree.refresh()
 

@@ -22,7 +22,7 @@ import math
 from typing import Any
 
 from wbtc.errors import Diagnostic, SchemaError, Span
-from wbtc.scene.model import Node, Scene
+from wbtc.scene.model import PENDING_USE, Node, Scene
 from wbtc.schema.registry import FieldSchema, node_schema, suggest
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import R2020B, R2022B, Version, before_r2022a
@@ -50,6 +50,7 @@ class NodeBuilder:
         self.warnings: list[Diagnostic] = []
         self.count = 0
         self._missing_uses: list[s.Use] = []
+        self._instance_depth = 0  # how many PROTO instances' fields are being built
         self._warned: set[tuple[str, str]] = set()
 
     def build(self, items: list[s.NodeSyntax | s.Use]) -> list[Node]:
@@ -76,6 +77,10 @@ class NodeBuilder:
             return self.node(value)
         if isinstance(value, s.Use):
             target = self.defs.get(value.name)
+            if target is None and self._instance_depth:
+                # Inside a PROTO instance's field: the DEF may be in the default value of one of its
+                # earlier fields, which the PROTO stage knows (it reports the USE if not).
+                return Node(PENDING_USE, value.span, None, value.name)
             if target is None:
                 self._missing_uses.append(value)
                 return _MISSING
@@ -103,8 +108,10 @@ class NodeBuilder:
         elif schema is not None and schema.deprecated:
             self._warn_once(syntax.type_name, "", f"{syntax.type_name} is an old node type that current Webots "
                             "no longer has", syntax.span)
+        self._instance_depth += schema is None
         for field in syntax.fields:
             self._field(node, field)
+        self._instance_depth -= schema is None
         if syntax.def_name is not None:
             self.defs[syntax.def_name] = node
         return node

@@ -17,6 +17,9 @@ from wbtc.schema.registry import NodeSchema
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import Version
 
+#: The type name of a placeholder for a USE whose DEF may come from a PROTO field's default.
+PENDING_USE = "USE"
+
 
 class Node:
     """One node of a scene.
@@ -49,6 +52,15 @@ class Node:
         self.proto: Any = None
         self.links: dict[str, str] | None = None
         self.link_owner: Any = None
+
+    @property
+    def pending_use(self) -> str | None:
+        """For a USE written in a PROTO instance's field whose DEF is not in the file: the DEF name.
+
+        Webots gives the instance its fields in the PROTO's interface order, defaults included, so
+        the DEF may be in the default value of an earlier field; the PROTO stage binds it.
+        """
+        return self.def_name if self.type_name == PENDING_USE else None
 
     @property
     def is_proto(self) -> bool:
