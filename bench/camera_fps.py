@@ -102,7 +102,7 @@ def camera_fps(folder: Path) -> dict[str, float]:
     result, _ = compile_world(folder / "ex07.wbt")
     sim = Simulation(result)
     camera = next(s for s in sim.robots[0].sensors.values() if isinstance(s, Camera))
-    full = Offscreen(sim.model, camera.width, camera.height)
+    full = Offscreen(sim.model, camera.width, camera.height, precise=True)
     full.cull = False
     renderer = mujoco.Renderer(sim.model, camera.height, camera.width)
     renderer.scene.flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0

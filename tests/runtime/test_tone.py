@@ -26,7 +26,7 @@ def _centre(tmp_path: Path, body: str, camera: str = "") -> tuple[int, int, int]
     sim = Simulation(result)
     mujoco.mj_forward(sim.model, sim.data)
     device = next(s for s in sim.robots[0].sensors.values() if isinstance(s, Camera))
-    rgb = sim.renderer(8, 8).draw(sim.data, device.camera, device.near, exposure=device.exposure)
+    rgb = sim.renderer(8, 8, precise=True).draw(sim.data, device.camera, device.near, exposure=device.exposure)
     pixel = tuple(int(v) for v in rgb[4, 4])
     sim.close()
     return pixel
@@ -42,6 +42,25 @@ def test_curve_maps_radiance_one_to_207_and_keeps_saturation_white():
     assert table[128] == 207  # radiance 128 / 255 × 2 = 1.004: Webots' (1 − e^−1)^(1/2.2) × 255 = 207.1
     assert tone.curve(0.5)[128] == 167  # exposure halves the radiance: (1 − e^−0.502)^(1/2.2)
     assert table[tone.inverse(239)] == 239 and abs(int(table[tone.inverse(102)]) - 102) <= 1
+
+
+def test_half_float_levels_follow_the_curve_between_whole_levels():
+    levels = np.array([[[0.01, 0.5, 4.27], [128.0, 254.0, 255.0]]])
+    halves = (levels / 255.0).astype(np.float16).view(np.uint16)  # what a half-float buffer holds
+    out = np.empty(levels.shape, dtype=np.uint8)
+    # Level 4.27 (radiance 0.0335) reads 54, between whole levels 4 (52) and 5 (58); level 0.5 reads 21
+    # where whole levels read 0 or 28; level 254 (a laser spot) 239; 255 and above saturate; below
+    # `DARKEST_LEVEL` (MuJoCo's blending leak) 0.
+    assert tone.map_half(halves, 1.0, out).tolist() == [[[0, 21, 54], [207, 239, 255]]]
+    assert out[0, 1:].tolist() == tone.map_levels(levels[0, 1:]).tolist()
+    assert tone.map_half(halves, 0.5, out)[0, 1, 0] == tone.curve(0.5)[128] == 167  # exposure halves the radiance
+
+
+def test_a_dark_phong_grey_reads_webots_value_not_an_8_bit_step(tmp_path):
+    # Webots' proto_nested_parameter_2: Material diffuseColor 0.2 (linear 0.033) lit straight on reads 54.
+    pixel = _centre(tmp_path, "Background { skyColor [ 1 1 1 ] }\nDirectionalLight { direction 0 0 -1 }\n"
+                    + _box("Appearance { material Material { diffuseColor 0.2 0.2 0.2 } }"))
+    assert pixel == (54, 54, 54)
 
 
 def test_phong_red_under_a_unit_light_reads_207(tmp_path):

@@ -232,7 +232,7 @@ class Camera(Sensor):
 
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """Render into the BGRA image (with Gaussian noise); the value names the block (or carries the bytes)."""
-        renderer = sim.renderer(self.width, self.height)
+        renderer = sim.renderer(self.width, self.height, precise=True)
         blurs = self.motion_blur > 0 and self.image_period > 0
         focuses = self.focus[0] > 0 and self.focus[1] > 0
         if blurs or focuses:  # Webots' effects work in linear light, before its tone curve

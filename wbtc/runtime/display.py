@@ -14,7 +14,8 @@ pixel (the sky, another object) shows through it, as in Webots. MuJoCo's rendere
 looks at its texture's alpha, only when the geom's alpha is below 0.995 (`mjr_render`), and it then
 draws the geom twice (front to back, then back to front), so that a fragment of alpha a covers
 a(2 − a) of what is behind. While the display's image has a pixel that is not opaque, its shapes get
-alpha `BLEND_ALPHA` (opaque pixels then cover 0.9999: within a byte of Webots' colour) and the
+alpha `BLEND_ALPHA` (opaque pixels then cover 0.99997: what shows through reads 0, see
+`tone.DARKEST_LEVEL`) and the
 texture's alpha is written so that the double drawing gives the display's own alpha; an opaque image
 puts the shapes back to opaque, so that they write depth as any other shape.
 
@@ -40,7 +41,7 @@ if TYPE_CHECKING:
 _CHANNELS = {3: (0, 1, 2, None), 4: (0, 1, 2, 3), 5: (1, 2, 3, 0), 6: (2, 1, 0, 3), 7: (3, 2, 1, 0)}
 #: A display shape's alpha while its image is transparent somewhere: just below the 0.995 at which
 #: MuJoCo's renderer starts blending a geom (and so looking at its texture's alpha).
-BLEND_ALPHA = 0.99
+BLEND_ALPHA = 0.9949
 #: At and above this alpha MuJoCo draws a geom opaque (render_gl3.c, `mjr_render`).
 _OPAQUE = 0.995
 

@@ -20,9 +20,12 @@ linearised (sRGB to linear) in the renderer's own copy, as Webots' shaders do; t
 its texture is stored so that it comes out of the curve as its own colour (a Background colour reads
 as written, as in Webots' cameras).
 
+Device cameras (`precise`) draw into a half-float colour buffer (`float_buffer`), as Webots draws
+into a float one, so dark shades read Webots' values; the Viewpoint's images (recordings, the window,
+`exportImage`) keep MuJoCo's linear 8-bit one, whose first level above black is 28 after the curve.
+
 Not honoured yet: Camera `far`, `antiAliasing TRUE`; shadows (`castShadows`) in camera images and
-recordings. Dark radiance is coarse: the first 8-bit level above black is 28 after the curve (Webots'
-HDR buffer is float), so shades darker than about 0.03 read 0 or 28.
+recordings.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ import mujoco
 import numpy as np
 
 from wbtc.gl_platform import gl_context
-from wbtc.runtime import tone
+from wbtc.runtime import float_buffer, tone
 
 #: Scene flags for every image: no reflections, haze or post-processing.
 _OFF = (mujoco.mjtRndFlag.mjRND_REFLECTION, mujoco.mjtRndFlag.mjRND_HAZE, mujoco.mjtRndFlag.mjRND_POST_PROCESSING)
@@ -70,7 +73,7 @@ class Offscreen:
     """Renders model cameras at one image size into a reused buffer."""
 
     def __init__(self, model: mujoco.MjModel, width: int, height: int, *, antialias: bool = False,
-                 shadows: bool = False, textures: dict[int, int] | None = None,
+                 shadows: bool = False, precise: bool = False, textures: dict[int, int] | None = None,
                  invisible: dict[int, set[int]] | None = None, camera_light: np.ndarray | None = None,
                  light_boost: np.ndarray | None = None) -> None:
         """Make the OpenGL and MuJoCo contexts.
@@ -81,6 +84,7 @@ class Offscreen:
             height: image height in pixels.
             antialias: 4× multisampling (recordings), else none (device cameras).
             shadows: draw the shadows of lights that cast them.
+            precise: draw into a half-float buffer (device cameras; see `float_buffer`), else 8 bits.
             textures: versions of the textures rewritten during the run (tex id -> count, shared with the
                 simulation, which bumps them); each is uploaded again before the next image.
             invisible: geoms each model camera does not draw (a supervisor's Node.setVisibility), shared
@@ -110,6 +114,9 @@ class Offscreen:
             self.context: mujoco.MjrContext | None = mujoco.MjrContext(model, mujoco.mjtFontScale.mjFONTSCALE_100)
         finally:
             vis.global_.offwidth, vis.global_.offheight, vis.quality.offsamples, vis.quality.shadowsize = saved
+        # A device camera draws into a half-float buffer: dark shades keep their precision (see `float_buffer`).
+        self.halves = float_buffer.make_float(self.context, self.width, self.height) \
+            if precise and not antialias else None
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         for tex in range(model.ntex):
             self._upload(tex)
@@ -212,7 +219,8 @@ class Offscreen:
             pose: (position, 3×3 rotation) to put the camera at for this image instead of its own.
             spots: laser spots to draw (centre, surface normal, radius), as Webots' cameras see them.
             exposure: the camera's exposure, for the tone curve; None returns the drawn linear levels
-                (radiance × 255 / `tone.HEADROOM`), for effects Webots applies before its tone mapping.
+                (radiance × 255 / `tone.HEADROOM`; floats from a half-float buffer, else bytes), for effects
+                Webots applies before its tone mapping.
             view: a camera of the caller's own (the window's free, tracking or fixed one), used as it
                 is instead of `camera` (pass -1 for `camera`).
 
@@ -270,6 +278,10 @@ class Offscreen:
                 glcam.frustum_far = far
         mujoco.mjr_setBuffer(mujoco.mjtFramebuffer.mjFB_OFFSCREEN, self.context)
         mujoco.mjr_render(self.rect, self.scene, self.context)
+        if self.halves is not None:
+            float_buffer.read(self.halves)
+            return float_buffer.levels(self.halves) if exposure is None \
+                else tone.map_half(self.halves, exposure, self.pixels)
         mujoco.mjr_readPixels(self.pixels, None, self.rect, self.context)
         return self.pixels if exposure is None else tone.apply(self.pixels, exposure)
 

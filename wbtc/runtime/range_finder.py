@@ -58,7 +58,8 @@ class RangeFinder(Sensor):
     def sample(self, sim: Simulation) -> dict[str, Any]:
         """The range image (rows from the top, as Webots' range image)."""
         if self.rays is None:
-            depth = sim.renderer(self.width, self.height).depth(sim.data, self.camera, self.near, self.max_range)
+            renderer = sim.renderer(self.width, self.height, precise=True)  # shared with a camera of its size
+            depth = renderer.depth(sim.data, self.camera, self.near, self.max_range)
             ranges = depth[::-1].copy()
         else:
             pos, mat = self.frame(sim)

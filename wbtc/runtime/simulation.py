@@ -353,13 +353,18 @@ class Simulation:
         self.texture_versions[tex] = self.texture_versions.get(tex, 0) + 1
         self.surface.forget(tex)
 
-    def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False) -> Offscreen:
-        """The offscreen renderer for one image size and quality (made once, freed by `close`)."""
-        key = (int(width), int(height), antialias, shadows)
+    def renderer(self, width: int, height: int, antialias: bool = False, shadows: bool = False,
+                 precise: bool = False) -> Offscreen:
+        """The offscreen renderer for one image size and quality (made once, freed by `close`).
+
+        `precise`: a device camera's, drawn into a half-float buffer (see `wbtc.runtime.float_buffer`).
+        """
+        key = (int(width), int(height), antialias, shadows, precise)
         renderer = self._renderers.get(key)
         if renderer is None:
             renderer = self._renderers[key] = Offscreen(self.model, width, height, antialias=antialias,
-                                                        shadows=shadows, textures=self.texture_versions,
+                                                        shadows=shadows, precise=precise,
+                                                        textures=self.texture_versions,
                                                         invisible=self.invisible, camera_light=self.camera_light(),
                                                         light_boost=self.light_boost())
         return renderer

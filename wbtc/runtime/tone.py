@@ -12,8 +12,10 @@ and maps each 8-bit level v, standing for radiance v / 255 × HEADROOM, through 
   every texture sample before lighting).
 - The sky is not lit: its texture holds `inverse(colour)`, the level the curve maps back to the colour.
 
-Not honoured: radiance between 0 and HEADROOM / 255 (the first level, 28 after the curve) has no
-finer steps, where Webots' float buffer has them.
+Device cameras draw into a half-float buffer (`wbtc.runtime.float_buffer`), mapped with `map_half`:
+dark shades read Webots' values. Recordings and the window map 8-bit linear levels
+(`apply`), where radiance between 0 and HEADROOM / 255 (the first level, 28 after the curve) has no
+finer steps.
 """
 
 from __future__ import annotations
@@ -94,6 +96,35 @@ def map_levels(levels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
     mapped = np.rint(255.0 * (1.0 - np.exp(-radiance)) ** (1.0 / GAMMA))
     mapped[np.asarray(levels) >= 255] = 255.0
     return mapped.astype(np.uint8)
+
+
+#: Drawn levels below this read 0 in a half-float image: MuJoCo's double drawing of a blended display
+#: shape lets 2.6e-5 of what is behind through its opaque pixels (`display.BLEND_ALPHA`), up to 0.0066
+#: of a level for a bright sky, which the curve would lift to 3. Radiance that low (below 9e-5) reads
+#: at most 3 in Webots.
+DARKEST_LEVEL = 0.012
+
+
+@functools.lru_cache(maxsize=16)
+def half_curve(exposure: float = 1.0) -> np.ndarray:
+    """The table from every half-float bit pattern (drawn radiance / `HEADROOM`) to the image value.
+
+    Each value is taken as a level (× 255) and goes through `map_levels`: 255 and above read 255,
+    below `DARKEST_LEVEL` 0.
+    """
+    drawn = np.arange(65536, dtype=np.uint32).astype(np.uint16).view(np.float16).astype(np.float64)
+    with np.errstate(invalid="ignore"):  # NaN and infinite bit patterns
+        levels = np.clip(np.nan_to_num(drawn * 255.0, nan=0.0, posinf=255.0, neginf=0.0), 0.0, 255.0)
+    levels[levels < DARKEST_LEVEL] = 0.0
+    table = map_levels(levels, exposure)
+    table.flags.writeable = False  # shared by every caller (cached)
+    return table
+
+
+def map_half(halves: np.ndarray, exposure: float, out: np.ndarray) -> np.ndarray:
+    """Map a half-float image (`float_buffer.read`, uint16 bits) through the curve into the 8-bit `out`."""
+    np.take(half_curve(exposure), halves, out=out)
+    return out
 
 
 def apply(pixels: np.ndarray, exposure: float = 1.0) -> np.ndarray:
