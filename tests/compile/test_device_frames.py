@@ -102,16 +102,17 @@ Robot {
 
 
 @pytest.mark.parametrize(("version", "x_axis"), [("R2021b", [0.0, 0.0, 1.0]), ("R2025a", [1.0, 0.0, 0.0])])
-def test_an_old_emitter_and_receiver_take_webots_turned_frame(tmp_path, version, x_axis):
+def test_an_old_emitter_receiver_and_touch_sensor_take_webots_turned_frame(tmp_path, version, x_axis):
     # Before R2022a an infra-red cone was along the node's +z; Webots turns such a node on load so
     # that its +x is the old +z (+y the old +x): the cone and the reported directions use that frame.
     world = tmp_path / "emit.wbt"
     world.write_text(f"#VRML_SIM {version} utf8\nWorldInfo {{ coordinateSystem \"ENU\" }}\n"
-                     'Robot { children [ Emitter { name "e" } Receiver { name "r" } ] }\n', encoding="utf-8")
+                     'Robot { children [ Emitter { name "e" } Receiver { name "r" } TouchSensor { name "t" } ] }\n',
+                     encoding="utf-8")
     result, _ = compile_world(world)
     data = mujoco.MjData(result.model)
     mujoco.mj_forward(result.model, data)
-    for name in ("robot/e", "robot/r"):
+    for name in ("robot/e", "robot/r", "robot/t"):
         frame = data.site_xmat[result.model.site(name).id].reshape(3, 3)
         assert frame[:, 0] == pytest.approx(x_axis, abs=1e-9)
         if version == "R2021b":

@@ -53,9 +53,10 @@ CAMERA_QUAT = mat_to_quat(np.array([[0.0, 0.0, -1.0], [-1.0, 0.0, 0.0], [0.0, 1.
 # Pre-R2022a lidars looked along -z with +y up and +x to the right; their site carries the R2022a
 # frame (+x ahead, +y left, +z up) the runtime casts in. Columns: x_site = -z, y_site = -x, z_site = +y.
 LEGACY_LIDAR_QUAT = mat_to_quat(np.array([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [-1.0, 0.0, 0.0]]))
-#: An Emitter's or Receiver's frame written before R2022a: its cone was along the node's +z. Webots
-#: turns such a node by (-pi/2, 0, -pi/2) on load, so that its +x takes the old +z, +y the old +x and
-#: +z the old +y (columns); its cone and the emitter directions it reports are in that turned frame.
+#: An Emitter's, Receiver's or TouchSensor's frame written before R2022a: its cone (or measured force)
+#: was along the node's +z. Webots turns such a node by (-pi/2, 0, -pi/2) on load, so that its +x takes
+#: the old +z, +y the old +x and +z the old +y (columns); its cone, the emitter directions it reports
+#: and a force sensor's axes are in that turned frame.
 LEGACY_EMITTER_QUAT = mat_to_quat(np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]))
 
 
@@ -108,7 +109,7 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     # looked along -z, turned here as the camera is.
     turned = kind in ("Lidar", "RangeFinder") and ctx.legacy_axes(node)
     site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if turned else at.quat
-    if kind in ("Emitter", "Receiver") and ctx.legacy_axes(node):
+    if kind in ("Emitter", "Receiver", "TouchSensor") and ctx.legacy_axes(node):
         site.quat = quat_mul(at.quat, LEGACY_EMITTER_QUAT)
     if robot.rub and kind in _AXIS_DEVICES and not ctx.legacy_axes(node):
         # A library robot in a pre-R2022a world: its IMU, accelerometer, gyro and compass read along
