@@ -117,3 +117,16 @@ def test_an_old_emitter_receiver_and_touch_sensor_take_webots_turned_frame(tmp_p
         assert frame[:, 0] == pytest.approx(x_axis, abs=1e-9)
         if version == "R2021b":
             assert frame[:, 1] == pytest.approx([1.0, 0.0, 0.0], abs=1e-9)
+
+
+def test_an_old_radar_looks_along_its_old_minus_z(tmp_path):
+    # A pre-R2022a Radar looked along -z (y up), as cameras did: Webots turns it so that +x takes -z.
+    world = tmp_path / "radar.wbt"
+    world.write_text('#VRML_SIM R2021b utf8\nWorldInfo { coordinateSystem "ENU" }\n'
+                     'Robot { children [ Radar { name "radar" } ] }\n', encoding="utf-8")
+    result, _ = compile_world(world)
+    data = mujoco.MjData(result.model)
+    mujoco.mj_forward(result.model, data)
+    frame = data.site_xmat[result.model.site("robot/radar").id].reshape(3, 3)
+    assert frame[:, 0] == pytest.approx([0.0, 0.0, -1.0], abs=1e-9)
+    assert frame[:, 2] == pytest.approx([0.0, 1.0, 0.0], abs=1e-9)

@@ -105,9 +105,9 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.group = SITE_GROUP
     site.info = info(node)
     site.pos = at.pos
-    # Lidars and RangeFinders cast rays in FLU device axes (a non-planar range image); pre-R2022a ones
-    # looked along -z, turned here as the camera is.
-    turned = kind in ("Lidar", "RangeFinder") and ctx.legacy_axes(node)
+    # Lidars, RangeFinders and Radars sense in FLU device axes (a non-planar range image); pre-R2022a
+    # ones looked along -z, turned here as the camera is (Webots turns them so on load).
+    turned = kind in ("Lidar", "RangeFinder", "Radar") and ctx.legacy_axes(node)
     site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if turned else at.quat
     if kind in ("Emitter", "Receiver", "TouchSensor") and ctx.legacy_axes(node):
         site.quat = quat_mul(at.quat, LEGACY_EMITTER_QUAT)
