@@ -24,9 +24,12 @@ class Xvfb:
         # Xvfb picks a free display itself and writes its number on `-displayfd` once it accepts clients
         # (a socket file alone can be there a moment before: a client then fails to open the display).
         read_end, write_end = os.pipe()
+        # -noreset: by default an X server resets when its last client leaves, and a client connecting
+        # while it resets can fail with "Failed to open display" (two CI runs saw that message when one
+        # test's window had just closed and the next test's was opening).
         self.process = subprocess.Popen(["Xvfb", "-displayfd", str(write_end), "-screen", "0", f"{width}x{height}x24",
-                                         "-nolisten", "tcp"], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                        pass_fds=(write_end,))
+                                         "-nolisten", "tcp", "-noreset"], stdout=subprocess.DEVNULL,
+                                        stderr=subprocess.DEVNULL, pass_fds=(write_end,))
         os.close(write_end)
         try:
             self.number = int(_read_line(read_end, timeout=10.0, process=self.process))
