@@ -58,6 +58,11 @@ LEGACY_LIDAR_QUAT = mat_to_quat(np.array([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [-1
 #: the old +z, +y the old +x and +z the old +y (columns); its cone, the emitter directions it reports
 #: and a force sensor's axes are in that turned frame.
 LEGACY_EMITTER_QUAT = mat_to_quat(np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]]))
+#: The devices whose site turns in a pre-R2022a file: Lidars, RangeFinders and Radars sense in FLU
+#: axes (a non-planar range image) where they looked along -z, as the camera (whose MuJoCo camera
+#: turns instead, `_camera`); Emitters, Receivers and TouchSensors along their old +z.
+_LEGACY_TURNS = {"Lidar": LEGACY_LIDAR_QUAT, "RangeFinder": LEGACY_LIDAR_QUAT, "Radar": LEGACY_LIDAR_QUAT,
+                 "Emitter": LEGACY_EMITTER_QUAT, "Receiver": LEGACY_EMITTER_QUAT, "TouchSensor": LEGACY_EMITTER_QUAT}
 
 
 def add_robot(node: Node, body: mujoco.MjsBody, ctx: CompileContext) -> RobotEntry:
@@ -105,12 +110,10 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.group = SITE_GROUP
     site.info = info(node)
     site.pos = at.pos
-    # Lidars, RangeFinders and Radars sense in FLU device axes (a non-planar range image); pre-R2022a
-    # ones looked along -z, turned here as the camera is (Webots turns them so on load).
-    turned = kind in ("Lidar", "RangeFinder", "Radar") and ctx.legacy_axes(node)
-    site.quat = quat_mul(at.quat, LEGACY_LIDAR_QUAT) if turned else at.quat
-    if kind in ("Emitter", "Receiver", "TouchSensor") and ctx.legacy_axes(node):
-        site.quat = quat_mul(at.quat, LEGACY_EMITTER_QUAT)
+    # A device written before R2022a sensed along other axes: its site takes the frame Webots turns
+    # it into on load (see `_LEGACY_TURNS`).
+    turn = _LEGACY_TURNS.get(kind) if ctx.legacy_axes(node) else None
+    site.quat = quat_mul(at.quat, turn) if turn is not None else at.quat
     if robot.rub and kind in _AXIS_DEVICES and not ctx.legacy_axes(node):
         # A library robot in a pre-R2022a world: its IMU, accelerometer, gyro and compass read along
         # the RUB axes its PROTO had then (see legacy_protos).

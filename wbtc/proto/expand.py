@@ -27,7 +27,7 @@ from wbtc.proto.resolve import ProtoSource, Resolver
 from wbtc.proto.template_render import render_body, template_context
 from wbtc.scene.build import NodeBuilder
 from wbtc.scene.legacy_nodes import convert_differential_wheels
-from wbtc.scene.model import Node, Scene, tree_edges, walk
+from wbtc.scene.model import Node, Scene, nodes_in, tree_edges, walk
 from wbtc.schema.registry import suggest
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import before_r2022a
@@ -340,12 +340,7 @@ def _bind_defaults(node: Node, model: ProtoModel, values: dict[str, Any]) -> Non
         if name in node.fields:
             values[name] = bind(values[name])
         else:
-            defs.update((n.def_name, n) for n in walk(_nodes_of(values[name])) if n.def_name)
-
-
-def _nodes_of(value: Any) -> list[Node]:
-    return [value] if isinstance(value, Node) else [v for v in value if isinstance(v, Node)] \
-        if isinstance(value, list) else []
+            defs.update((n.def_name, n) for n in walk(list(nodes_in(values[name]))) if n.def_name)
 
 
 def expand_scene(scene: Scene, strict: bool = False) -> tuple[Scene, Expansion]:

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from wbtc.proto.model import load_proto
-from wbtc.scene.model import Node, Scene, tree_edges
+from wbtc.scene.model import Node, Scene, tree_edges, visible_nodes
 from wbtc.vrml.values import _TUPLES
 
 #: Webots' field type codes (WB_SF_*; WB_MF_* = WB_SF_* | 0x10).
@@ -74,13 +74,15 @@ class SceneTree:
                    and node.proto is not None
                    and (number := node.proto.claimed_id()) is not None and number not in self.by_id}
         taken = set(claimed.values())
+        following = max(self.by_id) + 1  # the id after the largest given (kept here: `max` per node is quadratic)
         for parent, node in edges:
             if id(node) not in self.ids:
                 new = claimed.get(id(node))
                 if new is None:
-                    new = max(self.by_id) + 1
+                    new = following
                     while new in taken:
                         new += 1
+                following = max(following, new + 1)
                 self.ids[id(node)] = new
                 self.by_id[new] = node
             self.parents.setdefault(self.ids[id(node)], self.ids[id(parent)])
@@ -93,11 +95,8 @@ class SceneTree:
         """The nodes a supervisor reaches from `node` through its fields."""
         if node is self.root:
             yield from self.scene.nodes
-        elif node.proto is not None:
-            for value in node.proto.values.values():
-                yield from _nodes(value)
         else:
-            yield from node.child_nodes()
+            yield from visible_nodes(node)
 
     def parent(self, node: Node) -> Node | None:
         """The node holding `node` (None for top-level nodes and the root)."""
@@ -332,14 +331,6 @@ def def_name(node: Node) -> str:
 def type_name(node: Node) -> str:
     """`getTypeName`: the PROTO name for instances, else the built-in type."""
     return node.proto.name if node.proto is not None else node.base_type
-
-
-def _nodes(value: Any) -> Iterator[Node]:
-    if isinstance(value, Node):
-        yield value
-    elif isinstance(value, list):
-        for item in value:
-            yield from _nodes(item)
 
 
 def _fields_of(node: Node) -> dict[str, Any]:

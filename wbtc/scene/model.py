@@ -89,7 +89,7 @@ class Node:
     def child_nodes(self) -> Iterator[Node]:
         """Nodes held directly in this node's fields (written values only, in field order)."""
         for value in self.fields.values():
-            yield from _nodes_in(value)
+            yield from nodes_in(value)
 
     def __repr__(self) -> str:
         prefix = f"DEF {self.def_name} " if self.def_name else ""
@@ -106,24 +106,30 @@ def tree_edges(parent: Any, children: list, hidden: bool = True) -> Iterator[tup
         if not isinstance(child, Node):
             continue
         yield parent, child
-        if child.proto is not None:
-            yield from tree_edges(child, [n for value in child.proto.values.values() for n in _nodes_in(value)],
-                                  hidden)
-            if hidden:
-                yield from tree_edges(child, list(child.child_nodes()), hidden)
-        else:
+        yield from tree_edges(child, list(visible_nodes(child)), hidden)
+        if hidden and child.proto is not None:
             yield from tree_edges(child, list(child.child_nodes()), hidden)
 
 
-def _nodes_in(value: Any) -> Iterator[Node]:
+def visible_nodes(node: Node) -> Iterator[Node]:
+    """The nodes a supervisor reaches from `node` through its fields (a PROTO instance's: its interface values)."""
+    if node.proto is not None:
+        for value in node.proto.values.values():
+            yield from nodes_in(value)
+    else:
+        yield from node.child_nodes()
+
+
+def nodes_in(value: Any) -> Iterator[Node]:
+    """The nodes held in a field value (a node, or a list of them), in order."""
     if isinstance(value, Node):
         yield value
     elif isinstance(value, list):
         for item in value:
-            yield from _nodes_in(item)
+            yield from nodes_in(item)
     elif isinstance(value, s.MFList):
         for item in value.items:
-            yield from _nodes_in(item)
+            yield from nodes_in(item)
 
 
 def walk(nodes: list[Node], seen: set[int] | None = None) -> Iterator[Node]:
