@@ -21,6 +21,12 @@ CORPUS = SHARED / "corpus"
 os.environ["WBTC_CACHE_DIR"] = tempfile.mkdtemp(prefix="wbtc-test-cache-")
 os.environ.pop("WBTC_NO_CACHE", None)
 atexit.register(shutil.rmtree, os.environ["WBTC_CACHE_DIR"], ignore_errors=True)
+# Remote assets (`wbtc.compile.remote`): no download, no Webots installation and an empty asset cache of
+# the session's own, so that what a test sees does not depend on the network or on the user's cache.
+os.environ["WBTC_OFFLINE"] = "1"
+os.environ["WBTC_ASSET_CACHE"] = tempfile.mkdtemp(prefix="wbtc-test-assets-")
+os.environ.pop("WEBOTS_HOME", None)
+atexit.register(shutil.rmtree, os.environ["WBTC_ASSET_CACHE"], ignore_errors=True)
 LESSONS = CORPUS.parent / "lessons"
 
 

@@ -132,6 +132,20 @@ def test_a_texture_that_appears_later_is_seen(cache, world, monkeypatch):
     assert len(loads) == 2 and second.model.ntex == 1
 
 
+def test_a_remote_texture_that_reaches_the_asset_cache_later_is_seen(cache, world, tmp_path, monkeypatch):
+    monkeypatch.setenv("WBTC_ASSET_CACHE", str(tmp_path / "assets"))
+    _touch_later(world, WORLD.replace('"skin.png"', '"webots://textures/skin.png"'))
+    loads = _loads(monkeypatch)
+    _, _, first = world_cache.load_and_compile(world, CompileOptions())
+    assert first.model.ntex == 0 and any("webots://textures/skin.png" in w.message for w in first.warnings)
+    # As a later run on a machine with a network would have downloaded it:
+    target = tmp_path / "assets" / "raw.githubusercontent.com" / "cyberbotics" / "webots" / "R2025a" / "textures"
+    target.mkdir(parents=True)
+    Image.new("RGB", (4, 4), (255, 0, 0)).save(target / "skin.png")
+    _, _, second = world_cache.load_and_compile(world, CompileOptions())
+    assert len(loads) == 2 and second.model.ntex == 1
+
+
 def test_a_proto_added_to_the_project_is_found(cache, world, monkeypatch):
     loads = _loads(monkeypatch)
     (world.parent / "protos" / "Thing.proto").unlink()

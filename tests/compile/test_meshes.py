@@ -213,7 +213,8 @@ def test_open_mesh_uses_the_convex_hull() -> None:
 def test_urls_that_cannot_be_read() -> None:
     warnings: list = []
     assert mesh_file(_node('Mesh { url "webots://projects/robots/x.obj" }'), warnings) is None
-    assert "cannot be read offline" in warnings[0].message
+    assert warnings[0].message == ("Mesh url 'webots://projects/robots/x.obj' cannot be read (WBTC_OFFLINE is set; "
+                                   "not in WEBOTS_HOME or wbtc's asset cache): no geometry")
     warnings.clear()
     assert mesh_file(_node('Mesh { url [ "missing.obj" ] }'), warnings) is None
     assert warnings[0].message.startswith("Mesh file not found: 'missing.obj'")

@@ -30,6 +30,8 @@ HERE = Path(__file__).resolve().parent
 LIB = HERE / "lib"
 SUITES = ("api", "physics", "protos")
 EXPECTATIONS = HERE / "expected-failures.toml"
+#: Stands for a Webots installation: the assets of Webots' repository that the test worlds use.
+WEBOTS_HOME = HERE / "webots_home"
 #: Wall-clock seconds a test may take before it counts as hung.
 WALL_LIMIT_S = 240.0
 #: Wall-clock seconds the simulation may go on after every test controller has reported.
@@ -119,6 +121,11 @@ def run_test(test: str) -> Outcome:
         log = Path(tmp) / "output.txt"
         env = dict(os.environ)
         env["WBTC_TS_RESULTS"] = str(results)
+        # webots:// assets come from the few files of Webots' repository kept in `webots_home/`, never
+        # from the network or the user's asset cache (`wbtc.compile.remote`).
+        env["WEBOTS_HOME"] = str(WEBOTS_HOME)
+        env["WBTC_OFFLINE"] = "1"
+        env["WBTC_ASSET_CACHE"] = str(Path(tmp) / "assets")
         env["PYTHONPATH"] = os.pathsep.join([str(LIB), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
         with log.open("w", encoding="utf-8") as out:
             process = subprocess.Popen([*_wbtc_command(), "run", str(world_of(test)), "--headless"], env=env,

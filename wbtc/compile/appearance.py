@@ -57,7 +57,8 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
         urls = [str(u) for u in texture_node.get("url") or []]
         path = textures.resolve_url(urls, texture_node.span.file)
         if path is None and urls:
-            ctx.warn(f"the texture {urls[0]!r} cannot be found; the shape keeps its plain colour",
+            why = f" ({textures.remote.failure(urls[0])})" if textures.remote.is_remote(urls[0]) else ""
+            ctx.warn(f"the texture {urls[0]!r} cannot be found{why}; the shape keeps its plain colour",
                      texture_node.span)
     shown = display_texture.display_texture(ctx, texture_node, path) if isinstance(texture_node, Node) else None
     if shown is not None:

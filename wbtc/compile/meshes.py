@@ -1,15 +1,15 @@
 """Webots `Mesh` files to triangle meshes, and the mass properties of any triangle mesh.
 
-What it maps: `Mesh` -> `MeshData`: `url` (the first entry that exists), `ccw`, `name` (sub-mesh
-filter), texture coordinates when the file has them. Files are read with trimesh: OBJ, STL, PLY,
-OFF, GLTF; COLLADA (.dae) only when the optional `pycollada` package is installed. Loaded files are
-cached by path, modification time and name filter. `mesh_volume_and_inertia`: volume, centre of
+What it maps: `Mesh` -> `MeshData`: `url` (the first entry that exists; `webots://` and `http(s)://`
+URLs through `wbtc.compile.remote`, a warning and no mesh when they cannot be had), `ccw`, `name`
+(sub-mesh filter), texture coordinates when the file has them. Files are read with trimesh: OBJ, STL,
+PLY, OFF, GLTF; COLLADA (.dae) only when the optional `pycollada` package is installed. Loaded files
+are cached by path, modification time and name filter. `mesh_volume_and_inertia`: volume, centre of
 mass and unit-density inertia of a `MeshData` (IndexedFaceSets are read by `faceset`, ElevationGrids
 by `heightfield`).
 
 Not honoured yet: Mesh `materialIndex` (a warning is given when it is set), FBX files (trimesh cannot
-read them), `webots://` and `http(s)://` URLs (no Webots installation and no network: a warning, no
-mesh), and Assimp's COLLADA/FBX up-axis and unit-scale metadata handling.
+read them), and Assimp's COLLADA/FBX up-axis and unit-scale metadata handling.
 """
 
 from __future__ import annotations
@@ -43,6 +43,7 @@ def mesh_file(node: Any, warnings: list[Diagnostic] | None = None) -> MeshData |
     Returns:
         The mesh (sub-meshes merged with their scene-graph transforms applied), or None.
     """
+    from wbtc.compile import remote
     from wbtc.compile.textures import resolve_url
 
     found: list[Diagnostic] = []
@@ -54,10 +55,10 @@ def mesh_file(node: Any, warnings: list[Diagnostic] | None = None) -> MeshData |
     if not urls:
         warn(found, node, "Mesh has no url: no geometry")
     elif path is None:
-        remote = [u for u in urls if u.startswith(("webots://", "http://", "https://"))]
-        if remote:
-            warn(found, node, f"Mesh url {remote[0]!r} cannot be read offline (no Webots installation, no "
-                               "network): no geometry")
+        remote_urls = [u for u in urls if remote.is_remote(u)]
+        if remote_urls:
+            warn(found, node, f"Mesh url {remote_urls[0]!r} cannot be read ({remote.failure(remote_urls[0])}; "
+                              "not in WEBOTS_HOME or wbtc's asset cache): no geometry")
         else:
             warn(found, node, f"Mesh file not found: {urls[0]!r} (relative to {os.path.dirname(base_file) or '.'})")
     else:

@@ -4,7 +4,8 @@ What it maps:
 
 * `ImageTexture.url` (and any other MFString url field, e.g. Mesh) -> a local file: `resolve_url`.
   Relative URLs resolve against the folder of the file the node was written in (the world, or the
-  PROTO for nodes a PROTO made); absolute paths are taken as they are.
+  PROTO for nodes a PROTO made); absolute paths are taken as they are; `webots://` and `http(s)://`
+  URLs through `wbtc.compile.remote` (a Webots installation, wbtc's asset cache, or a download).
 * Image files -> `TextureData` (8-bit RGB rows, top row first, plus whether the image is
   transparent) through Pillow: JPEG and PNG as in Webots, and whatever else Pillow reads.
 * Image files -> PNG copies for MJCF output (`texture_to_png`): MuJoCo reads PNG textures only.
@@ -13,8 +14,6 @@ What it maps:
 
 Not honoured yet:
 
-* `webots://` URLs (they need a Webots installation) and `http(s)://` URLs (wbtc never uses the
-  network): `resolve_url` skips them, and gives None when nothing else is left.
 * ImageTexture `repeatS`/`repeatT` FALSE (MuJoCo always repeats: a clamped texture's coordinates
   outside [0, 1] show it again instead of its edge texels) and `filtering` (rendering only).
 * Image orientation metadata (EXIF): ignored, as Webots' Qt image reader ignores it.
@@ -32,8 +31,7 @@ from typing import Any
 
 import numpy as np
 
-#: URL schemes that cannot be read offline.
-_REMOTE = ("webots://", "http://", "https://")
+from wbtc.compile import remote
 
 #: Lists that collect every path `resolve_url` looks at, found or not (`wbtc.world_cache` watches
 #: what a world's result depends on this way).
@@ -48,12 +46,17 @@ def resolve_url(urls: list[str], base_file: str) -> str | None:
         base_file: the file the node was written in (its folder anchors relative URLs).
 
     Returns:
-        The file's path (normalised, absolute when `base_file` is), or None when no entry is a local
-        file that exists (`webots://` and `http(s)://` entries are never resolved).
+        The file's path (normalised, absolute when `base_file` is), or None when no entry names a
+        file that exists, is installed, cached or can be downloaded (`wbtc.compile.remote`).
     """
     folder = os.path.dirname(base_file)
     for url in urls:
-        if not url or url.startswith(_REMOTE):
+        if not url:
+            continue
+        if remote.is_remote(url):
+            found = remote.local_copy(url, LOOKED_AT)
+            if found is not None:
+                return found
             continue
         path = url if os.path.isabs(url) else os.path.join(folder, url)
         path = os.path.normpath(path)
