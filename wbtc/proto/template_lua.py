@@ -15,7 +15,10 @@ what a template can observe of that:
   collected text is split into console lines at line breaks;
 * ``require`` gives the standard libraries and wbtc's own versions of Webots' Lua modules
   (``wbcore``, ``wbgeometry``, ``wbrandom``, ``wbrotation``, ``wbvector2``, ``wbvector3``,
-  ``wbmath``, ``wbstring``, ``wblimits``, ``wbfile``), fresh for every render.
+  ``wbmath``, ``wbstring``, ``wblimits``, ``wbfile``) and of Lua-GD (``gd``, `wbtc.proto.template_gd`),
+  fresh for every render;
+* files: Webots runs Lua templates in its temporary folder, so ``io.open`` and ``gd`` resolve a relative
+  file name in ``context.temporary_files_path``.
 
 The generated Lua keeps the body's line structure (body line *k* is line *k* of the chunk), so
 errors map back to PROTO lines. One Lua runtime per thread is created once; modules are
@@ -40,6 +43,7 @@ from wbtc.proto.template_common import (
     plain_value,
     proto_error,
 )
+from wbtc.proto.template_gd import GdHost
 
 try:  # Webots embeds Lua 5.2: number formatting and library details follow it.
     import lupa.lua52 as _lupa
@@ -49,7 +53,7 @@ except ImportError:  # pragma: no cover - lupa builds without the 5.2 runtime
 _LUA_DIR = Path(__file__).with_name("js") / "lua"
 
 #: Modules templates may ``require``.
-MODULES = ("wbcore", "wbfile", "wbgeometry", "wblimits", "wbmath", "wbrandom", "wbrotation",
+MODULES = ("gd", "wbcore", "wbfile", "wbgeometry", "wblimits", "wbmath", "wbrandom", "wbrotation",
            "wbstring", "wbvector2", "wbvector3")
 
 #: Time limit of one render, in seconds of CPU time.
@@ -69,6 +73,9 @@ class LuaEngine:
         self._runtime.execute((_LUA_DIR / "_prelude.lua").read_text(encoding="utf-8"))
         # Item access: attribute names starting with "__" would be mangled inside the class.
         lua_globals = self._runtime.globals()
+        # Lua-GD's images are drawn by the host; the module reaches these functions, templates do not.
+        self._gd = GdHost()
+        lua_globals["__wb_gd"] = self._runtime.table_from(self._gd.functions())
         for name in MODULES:
             source = (_LUA_DIR / f"{name}.lua").read_text(encoding="utf-8")
             lua_globals["__wb_register_module"](name, source)
@@ -108,8 +115,13 @@ class LuaEngine:
 
         lua_fields = self._table(fields)
         lua_context = self._table(context)
-        ok, text, out_text, err_text, message, line, segments = self._render(
-            template_id, lua_fields, lua_context, TIME_LIMIT)
+        folder = str(context.get("temporary_files_path") or "")
+        self._gd.reset(folder)
+        try:
+            ok, text, out_text, err_text, message, line, segments = self._render(
+                template_id, lua_fields, lua_context, TIME_LIMIT, folder)
+        finally:
+            self._gd.reset("")
         stdout = console_lines(str(out_text or ""))
         stderr = console_lines(str(err_text or ""))
         if not ok:

@@ -27,6 +27,9 @@ from wbtc.vrml.parser import parse_body
 
 _RENDERED: dict[tuple[Any, ...], str] = {}
 _FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
+#: A template that names its temporary folder, or may read or write files (Lua's io, Lua-GD), gets the
+#: folder: Webots runs Lua templates in it, so a relative file name lands there.
+_USES_FILES = re.compile(r"temporary_files_path|\bio\s*\.|require\s*\(?\s*['\"](?:gd|io)['\"]")
 
 
 @lru_cache(maxsize=256)
@@ -46,8 +49,7 @@ def template_context(model: ProtoModel, world_path: Path, scene: Scene, instance
         "webots_version": {"major": version.split()[0], "revision": "0"},
         "webots_home": "", "os": "linux", "id": instance_id,
         # made only for a template that uses it (a folder per run)
-        "temporary_files_path": temporary_files_path() if "temporary_files_path" in (model.syntax.template or "")
-        else "",
+        "temporary_files_path": temporary_files_path() if _USES_FILES.search(model.syntax.template or "") else "",
     }
 
 

@@ -62,7 +62,7 @@ end
 
 -- Runs template `id` and returns ok, text, stdout, stderr, error message, error line and the
 -- line-map segments (comma-separated numbers).
-function __wb_render(id, fields, context, seconds)
+function __wb_render(id, fields, context, seconds, folder)
   local chunk = templates[id]
   local output, count = {}, 0
   local stdout_text, stderr_text = {}, {}
@@ -81,10 +81,19 @@ function __wb_render(id, fields, context, seconds)
   local append_err = collector(stderr_text)
   local stdout_stream = { write = function(self, ...) append_out(...) return self end }
   local stderr_stream = { write = function(self, ...) append_err(...) return self end }
+  -- Webots runs Lua templates in its temporary folder: relative file names land there.
+  local function in_folder(name)
+    if type(name) == 'string' and folder ~= '' and name:sub(1, 1) ~= '/' then
+      return folder .. name
+    end
+    return name
+  end
   local io_proxy = setmetatable({
     stdout = stdout_stream,
     stderr = stderr_stream,
-    write = function(...) append_out(...) return stdout_stream end
+    write = function(...) append_out(...) return stdout_stream end,
+    open = function(name, ...) return io.open(in_folder(name), ...) end,
+    lines = function(name, ...) return io.lines(in_folder(name), ...) end
   }, { __index = io })
 
   -- %{= expr }% values: strings and numbers are appended (numbers in Lua's own formatting), nil
