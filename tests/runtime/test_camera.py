@@ -192,3 +192,31 @@ def test_point_lights_keep_intensities_above_one_their_attenuation_divides(tmp_p
     assert 20 < plain < 200
     assert far == pytest.approx(plain, abs=3)
     assert brighter > far + 10
+
+
+UNLIT_WORLD = """#VRML_SIM R2025a utf8
+WorldInfo {{ basicTimeStep 16 }}
+Background {{ skyColor [ 0 0 0 ] }}
+DirectionalLight {{ direction 1 0 -1 intensity {intensity} }}
+Solid {{ translation 0.5 0.3 0 children [ Shape {{ appearance Appearance {{ }} geometry Box {{ size 0.1 0.5 0.5 }} }} ] }}
+Solid {{ translation 0.5 -0.3 0 children [ Shape {{ appearance Appearance {{ material Material {{ }} }}
+                                                   geometry Box {{ size 0.1 0.5 0.5 }} }} ] name "lit" }}
+Robot {{ children [ Camera {{ width 40 height 10 fieldOfView 1.6 }} ] controller "<none>" }}
+"""
+
+
+@pytest.mark.parametrize(("intensity", "lit"), [(0.5, 120), (2.0, 198)])
+def test_an_appearance_without_material_is_drawn_unlit(tmp_path, intensity, lit):
+    # Webots draws it with wren's default shader: white whatever the lights, so 207 after the tone curve
+    # (1 - e^-1)^(1/2.2); the Material beside it is lit.
+    from tests.conftest import simulation_of
+
+    sim = simulation_of(tmp_path, UNLIT_WORLD.format(intensity=intensity))
+    try:
+        camera = _camera(sim)
+        camera.use_shared = False
+        image = np.frombuffer(camera.sample(sim)["data"], dtype=np.uint8).reshape(10, 40, 4)
+        assert image[5, 6, :3].tolist() == [207, 207, 207]  # left of the view: +y, the unlit box
+        assert image[5, 33, :3].tolist() == [lit] * 3  # right: the Material's box, as the light gives
+    finally:
+        sim.close()

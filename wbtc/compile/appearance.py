@@ -11,8 +11,10 @@ Highlights: a Material's `specularColor` (its mean: MuJoCo has one level) and `s
 PBRAppearance's from roughness and metalness (`_pbr_specular`).
 
 Ambient light (`world.set_ambient`): a Phong Material is lit by the lights' ambientIntensity × its
-own `ambientIntensity`, a PBRAppearance (or a shape without Material) by the Background; MuJoCo
-has one ambient for all, so each material's `ambient_roles` entry lets its emission make up the rest.
+own `ambientIntensity`, a PBRAppearance by the Background; MuJoCo has one ambient for all, so each
+material's `ambient_roles` entry lets its emission make up the rest. An Appearance without Material is
+unlit in Webots (white, or its texture's colour): cameras draw it so (`unlit`, `UNLIT_K`); MuJoCo's
+viewer still lights it.
 
 Not honoured yet: a coloured specular; PBRAppearance maps other than
 `baseColorMap` (roughness, metalness, normal, occlusion, emissive maps), `IBLStrength`;
@@ -98,6 +100,12 @@ def _pbr(appearance: Node) -> tuple[np.ndarray, float, Node | None]:
     return _fold_emission(base, emissive, alpha), _emission(base, emissive), appearance.get("baseColorMap")
 
 
+#: The share of direct light an unlit material takes in cameras: none to speak of. Cameras draw a
+#: material's colour × k and its emission ÷ k (`world.set_ambient`), so an emission of 1 / k draws the
+#: colour itself; MuJoCo has no unlit materials, and lights add k × their light (1e-4: under a level).
+UNLIT_K = 1e-4
+
+
 def _phong_specular(appearance: Node) -> tuple[float, float]:
     """MuJoCo's specular and shininess for a Phong Appearance: the Material's own (no Material: a dull one).
 
@@ -106,7 +114,7 @@ def _phong_specular(appearance: Node) -> tuple[float, float]:
     """
     material = appearance.get("material")
     if not isinstance(material, Node):
-        return 0.3, 0.5
+        return 0.0, 0.5  # unlit (see _camera_terms): no highlight either
     colour = np.asarray(material.get("specularColor"), dtype=float)
     return float(np.clip(colour.mean(), 0.0, 1.0)), float(np.clip(float(material.get("shininess")), 0.0, 1.0))
 
@@ -124,15 +132,27 @@ def _pbr_specular(appearance: Node) -> tuple[float, float]:
     return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
+def unlit(node: Node) -> bool:
+    """Whether Webots draws an appearance unlit: an Appearance without Material.
+
+    Webots' Appearance documents it ("lighting is off ... the unlit object color is (1,1,1)"), and wren
+    draws it with its default shader: white, or the texture's colour, whatever the lights.
+    """
+    return node.base_type == "Appearance" and not isinstance(node.get("material"), Node)
+
+
 def _camera_terms(node: Node) -> tuple[float, float]:
     """(k, a): how Webots' shaders scale a material's linear colour for direct light (k) and ambient (a).
 
-    A Phong Material (and an Appearance without one) reflects direct light at its colour: k = 1. Webots'
+    A Phong Material reflects direct light at its colour: k = 1; an unlit appearance reflects none (k is
+    `UNLIT_K`, and `world.set_ambient` gives it its colour as emission). Webots'
     PBR shader reflects it at (1 − 0.04)·(1 − metalness)/π of its base colour (Lambert's 1/π, no π in its
     light intensities), and the Background's uniform light at (1 − 0.04)·(1 − metalness) plus, for
     metals, about their base colour again (the sky's specular reflection): a. k is floored so that a
     full metal keeps a colour for its ambient to scale (MuJoCo's emission multiplies the colour).
     """
+    if unlit(node):
+        return UNLIT_K, 0.0
     if node.base_type != "PBRAppearance":
         return 1.0, 1.0
     metalness = float(np.clip(float(node.get("metalness")), 0.0, 1.0))

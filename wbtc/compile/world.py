@@ -31,6 +31,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import contact
+from wbtc.compile.appearance import UNLIT_K
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.device import CAMERA_QUAT
 from wbtc.compile.frames import IDENTITY_QUAT, NUE_TO_ENU, NUE_TO_ENU_QUAT, Frame, axis_angle_quat, quat_mul
@@ -152,6 +153,8 @@ def set_ambient(background: Node | None, ctx: CompileContext) -> None:
         # Cameras draw the colour × k and the emission ÷ k (see appearance._camera_terms).
         k, scale = ctx.camera_terms.get(name, (1.0, 1.0))
         lit = image_light if role is None else own / MATERIAL_AMBIENT * srgb_to_linear(role)
+        if k == UNLIT_K:
+            lit, scale, emissive = 0.0, 0.0, 1.0  # drawn at its own colour: an emission of 1
         ctx.table.camera_light[name] = ((lit * scale + srgb_to_linear(emissive)) / k, k)
 
 
