@@ -151,7 +151,8 @@ def test_webots_lua_modules():
 def test_unknown_module():
     with pytest.raises(ProtoError) as raised:
         lua("{\n  %{ local lfs = require('lfs') }%\n}", body_line=3)
-    assert raised.value.message.startswith("template error in Test.proto: module 'lfs' not found (wbtc provides gd, wbcore,")
+    assert raised.value.message.startswith(
+        "template error in Test.proto: module 'lfs' not found (wbtc provides gd, wbcore,")
     assert raised.value.span == Span("/protos/Test.proto", 4, 3)
 
 

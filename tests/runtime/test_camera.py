@@ -198,7 +198,8 @@ UNLIT_WORLD = """#VRML_SIM R2025a utf8
 WorldInfo {{ basicTimeStep 16 }}
 Background {{ skyColor [ 0 0 0 ] }}
 DirectionalLight {{ direction 1 0 -1 intensity {intensity} }}
-Solid {{ translation 0.5 0.3 0 children [ Shape {{ appearance Appearance {{ }} geometry Box {{ size 0.1 0.5 0.5 }} }} ] }}
+Solid {{ translation 0.5 0.3 0
+         children [ Shape {{ appearance Appearance {{ }} geometry Box {{ size 0.1 0.5 0.5 }} }} ] }}
 Solid {{ translation 0.5 -0.3 0 children [ Shape {{ appearance Appearance {{ material Material {{ }} }}
                                                    geometry Box {{ size 0.1 0.5 0.5 }} }} ] name "lit" }}
 Robot {{ children [ Camera {{ width 40 height 10 fieldOfView 1.6 }} ] controller "<none>" }}

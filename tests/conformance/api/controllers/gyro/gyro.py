@@ -1,4 +1,9 @@
-"""Port of Webots' tests/api/controllers/gyro: lookup table getters and the angular velocity of a turning hinge."""
+"""Port of Webots' tests/api/controllers/gyro: lookup table getters and the angular velocity of a turning hinge.
+
+The stored upstream controller expects lookupTable[3] = 100 where the stored world (R2021c) writes 1000; this port
+follows the version of the controller that matches that world, as kept in omnilink-tech/omnisim (a Webots fork,
+tests/api/controllers/gyro/gyro.c): 1000.
+"""
 
 from controller import Robot
 from ts_assertion import ts_assert_double_equal, ts_assert_vec3_in_delta, ts_send_success, ts_setup
@@ -18,7 +23,8 @@ for _ in range(40):
 lookup_table = gyro.getLookupTable()
 size = len(lookup_table) // 3
 ts_assert_double_equal(size, 2, "Lookup table size returned is wrong (%d instead of 2)", size)
-ts_assert_double_equal(lookup_table[3], 100, "Lookup table (index 3) returned is wrong (%lf instead of 100)", lookup_table[3])
+ts_assert_double_equal(lookup_table[3], 1000, "Lookup table (index 3) returned is wrong (%lf instead of 1000)",
+                       lookup_table[3])
 ts_assert_double_equal(lookup_table[5], 0, "Lookup table (index 5) returned is wrong (%lf instead of 0)", lookup_table[5])
 
 values = gyro.getValues()
