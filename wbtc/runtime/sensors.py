@@ -191,16 +191,20 @@ class GPS(Sensor):
         """Position (with accuracy noise) and velocity."""
         pos, _ = self.frame(sim)
         mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, 0)
-        # WGS84 worlds: latitude, longitude, altitude of the model's east-north-up position about gpsReference.
-        p = np.array(to_wgs84(sim.geo_axes @ pos, sim.table.gps_reference)) if sim.table.gps_wgs84 \
-            else sim.from_model @ pos
+        p = sim.geo_axes @ pos if sim.table.gps_wgs84 else sim.from_model @ pos
         if self.accuracy > 0 and sim.noise_rng is not None:
-            p = p + sim.noise_rng.normal(0.0, self.accuracy, 3)
+            p = p + sim.noise_rng.normal(0.0, self.accuracy, 3)  # metres, before a WGS84 projection (as Webots)
+        if sim.table.gps_wgs84:
+            # Latitude, longitude, altitude of the east-north-up position about gpsReference, through Webots'
+            # UTM grid; the resolution applies to the grid metres.
+            return to_wgs84(p, sim.table.gps_reference, self.resolution) + [float(c) for c in self._velocity(sim, pos)]
+        return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in self._velocity(sim, pos)]
+
+    def _velocity(self, sim: Simulation, pos: np.ndarray) -> np.ndarray:
         # Webots gives the speed vector in east-north-up order whatever the world's coordinateSystem (an
         # NUE world's velocity (n, u, e) reads (e, n, u)), while positions keep the world's axes: the
         # model frame is ENU, so the model's velocity is that vector as is.
-        v = sim.geo_axes @ (self._res[3:] if self.dynamic else self._difference(sim.time_ms, pos))
-        return [quantize(float(c), self.resolution) for c in p] + [float(c) for c in v]
+        return sim.geo_axes @ (self._res[3:] if self.dynamic else self._difference(sim.time_ms, pos))
 
     def _difference(self, time_ms: float, pos: np.ndarray) -> np.ndarray:
         """The mean velocity since the previous sample (NaN at the first one)."""

