@@ -9,7 +9,10 @@ which the contact solver then sees, as ODE solves its motors with the contacts):
   error, `Vc = P·e + I·∫e + D·(e_prev − e)/ts`, clamped to the requested velocity;
 - velocity control (`setPosition(inf)`): the requested velocity, signed;
 - either way the change of Vc is limited by `acceleration` (when not -1);
-- torque/force control (`setTorque`/`setForce`): a constant effort, the servo gain set to zero.
+- torque/force control (`setTorque`/`setForce`): a constant effort, the servo gain set to zero. Its
+  feedback is what the joint's own constraint gives along the axis, its stops (`joint_limit_force`):
+  Webots adds the torque to the bodies (`dJointAddHingeTorque`), outside the joint feedback it reads,
+  so a free joint reads about 0, not the command.
 
 An untouched motor targets the joint's initial position, so it holds the joint (Webots' rule).
 
@@ -189,10 +192,23 @@ class Motor:
         self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
 
     def feedback(self, data: mujoco.MjData) -> float:
-        """The torque/force the actuator applied over the last step (its mean over the substeps)."""
+        """The torque/force the motor's joint gave over the last step (its mean over the substeps)."""
         if self.step_force is not None:
             return self.step_force
         return float(data.actuator_force[self.actuator])
+
+    def joint_limit_force(self, model: mujoco.MjModel, data: mujoco.MjData) -> float:
+        """The force or torque the joint's stops give along its axis now (0 away from them)."""
+        joint = int(model.dof_jntid[self.dof_adr])
+        count = data.nefc
+        rows = (data.efc_type[:count] == mujoco.mjtConstraint.mjCNSTR_LIMIT_JOINT) & (data.efc_id[:count] == joint)
+        if not rows.any():
+            return 0.0
+        # A limit row pushes away from the stop it is at: up from the lower one, down from the upper one.
+        low, high = model.jnt_range[joint]
+        position = float(data.qpos[self.qpos_adr])
+        sign = 1.0 if abs(position - low) <= abs(position - high) else -1.0
+        return sign * float(data.efc_force[:count][rows].sum())
 
     def enable_feedback(self, period: int, now_ms: float) -> None:
         """`enableTorqueFeedback(p)`/`enableForceFeedback(p)`; 0 disables (first value p ms later)."""

@@ -157,12 +157,17 @@ class Simulation:
             return
         actuators = [m.actuator for m in motors]
         dofs = [m.dof_adr for m in motors]
+        # Under torque control the feedback is the joint's stops only (motors.Motor.joint_limit_force).
+        by_torque = [(i, m) for i, m in enumerate(motors) if m.torque is not None]
+        servo = np.array([m.torque is None for m in motors])
         total = np.zeros(len(motors))
         for _ in range(self.substeps):
             substep(model, data)
             # The servo's armature (see compile.device.tune_servos) is no part of the robot: the torque
             # the joint receives is the actuator's less what accelerating the armature took.
-            total += data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs]
+            total += servo * (data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs])
+            for i, motor in by_torque:
+                total[i] += motor.joint_limit_force(model, data)
         for motor, force in zip(motors, total / self.substeps, strict=True):
             motor.step_force = float(force)
 
