@@ -54,6 +54,7 @@ def online(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     monkeypatch.delenv("WBTC_OFFLINE", raising=False)
     monkeypatch.setenv("WBTC_ASSET_CACHE", str(cache))
     monkeypatch.setattr(remote, "_FAILED", {})
+    monkeypatch.setattr(remote, "_UNREACHABLE", [])
     return cache
 
 
@@ -142,3 +143,20 @@ def test_world_texture_offline_warns(tmp_path: Path, online: Path, monkeypatch: 
     assert [w.message for w in result.warnings if "texture" in w.message] == [
         "the texture 'webots://textures/red.png' cannot be found (WBTC_OFFLINE is set); the shape keeps its "
         "plain colour"]
+
+
+def test_no_network_is_tried_once(online: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # A port nothing listens on: the connection is refused, as a machine without a network fails.
+    monkeypatch.setenv("WBTC_WEBOTS_URL", "http://127.0.0.1:9/R2025a/")
+    tried: list[str] = []
+    real = remote.urllib.request.urlopen
+
+    def counting(address: str, timeout: float):
+        tried.append(address)
+        return real(address, timeout=timeout)
+
+    monkeypatch.setattr(remote.urllib.request, "urlopen", counting)
+    assert remote.local_copy("webots://a.png") is None and remote.local_copy("webots://b.png") is None
+    assert tried == ["http://127.0.0.1:9/R2025a/a.png"]
+    assert remote.failure("webots://a.png").startswith("no network (")
+    assert remote.failure("webots://b.png") == remote.failure("webots://a.png")

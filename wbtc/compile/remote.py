@@ -11,8 +11,9 @@ What it maps: a url entry that names no local file ->
   `~/.cache/wbtc/assets`).
 
 `WBTC_OFFLINE=1` never downloads (the cache and `WEBOTS_HOME` are still read); `WBTC_WEBOTS_URL`
-replaces the address `webots://` stands for (a mirror). A download that fails is tried once per run:
-the caller warns and goes on without the asset, as before.
+replaces the address `webots://` stands for (a mirror). A download that fails is tried once per run,
+and once one fails for want of a network no other is tried: the caller warns and goes on without the
+asset, as before.
 
 PROTO files are never fetched this way: wbtc's PROTO library stands for Webots' (`wbtc.proto.resolve`).
 Not honoured yet: Webots' cache expiry (its cache keeps files for a set time; wbtc's keeps them until
@@ -34,10 +35,14 @@ from pathlib import Path
 WEBOTS_URL = "https://raw.githubusercontent.com/cyberbotics/webots/R2025a/"
 
 #: Seconds a download may take before it is given up.
-TIMEOUT = 15.0
+TIMEOUT = 10.0
 
 #: URLs whose download failed in this process, with why (tried once per run).
 _FAILED: dict[str, str] = {}
+
+#: Why the network is out of reach, once a download failed for want of it: later URLs are not tried, so
+#: that a world with many remote assets on a machine without a network waits for one timeout, not one each.
+_UNREACHABLE: list[str] = []
 
 
 def is_remote(url: str) -> bool:
@@ -120,12 +125,17 @@ def _download(address: str, target: Path, url: str) -> bool:
     if os.environ.get("WBTC_OFFLINE", "") not in ("", "0"):
         _FAILED[url] = "WBTC_OFFLINE is set"
         return False
+    if _UNREACHABLE:
+        _FAILED[url] = _UNREACHABLE[0]
+        return False
     try:
         with urllib.request.urlopen(address, timeout=TIMEOUT) as response:  # noqa: S310 - http(s) only
             data = response.read()
         _store(data, target)
     except (OSError, ValueError, urllib.error.URLError) as exc:
         _FAILED[url] = _reason(exc)
+        if isinstance(exc, (urllib.error.URLError, TimeoutError)) and not isinstance(exc, urllib.error.HTTPError):
+            _UNREACHABLE.append(_FAILED[url])
         return False
     print(f"wbtc: downloaded {address} ({len(data):,} bytes) into {target}", file=sys.stderr)
     return True
