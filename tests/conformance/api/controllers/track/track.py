@@ -1,6 +1,10 @@
 """Port of Webots' tests/api/controllers/track: one controller for both robots (the test name comes from
 controllerArgs, as the C original's ts_setup(argv[1])). The "tracked robot" drives its two Tracks by position, then
-turns on the spot by velocity; the "track brake" robot pushes its invisible Track with a force, then brakes it."""
+turns on the spot by velocity; the "track brake" robot pushes its invisible Track with a force, then brakes it.
+
+The turned robot's rotation is expected as axis (0, -1, 0), angle 1.097467, as in the upstream version at b98925b8
+(and omnilink-tech/omnisim); the older 8364fc97 wrote the same rotation as axis (0, 1, 0), angle -1.097467.
+"""
 
 import sys
 
@@ -106,9 +110,9 @@ def test_tracked_robot() -> None:
                               "Left and right motor position offset of tracked robot doesn't match after rotating.")
 
     orientation = rotation_field.getSFRotation()
-    ts_assert_vec3_in_delta(orientation[0], orientation[1], orientation[2], 0.0, 1.0, 0.0, 0.002,
+    ts_assert_vec3_in_delta(orientation[0], orientation[1], orientation[2], 0.0, -1.0, 0.0, 0.002,
                             "Tracked robot rotation axis is wrong after rotating.")
-    ts_assert_double_in_delta(orientation[3], -1.097467, 0.0001, "Tracked robot rotation angle is wrong after rotating.")
+    ts_assert_double_in_delta(orientation[3], 1.097467, 0.0001, "Tracked robot rotation angle is wrong after rotating.")
 
     right_motor.setVelocity(0.0)
     left_motor.setVelocity(0.0)
