@@ -72,3 +72,60 @@ def test_under_torque_control_a_free_joint_reads_no_torque_then_its_stop(sim):
     # Resting on its stop, the joint holds the motor's torque back: the stop pushes down, -0.5 N m.
     assert [round(v, 3) for v in held] == [-0.5] * 10
 
+
+
+SATURATING = """#VRML_SIM R2025a utf8
+WorldInfo {
+  basicTimeStep 32
+  gravity 0
+}
+Robot {
+  children [
+    HingeJoint {
+      jointParameters HingeJointParameters {
+        axis 0 0 1
+        dampingConstant %s
+      }
+      device [
+        RotationalMotor {
+          maxVelocity 20
+          maxTorque 30
+        }
+      ]
+      endPoint Solid {
+        physics Physics {
+          density -1
+          mass 1
+          centerOfMass [ 0 0 0 ]
+          inertiaMatrix [ 0.005 0.005 0.005, 0 0 0 ]
+        }
+      }
+    }
+  ]
+  controller "<none>"
+}
+"""
+
+
+@pytest.mark.parametrize(("damping", "first"), [(10.0, 30.0), (0.0, 3.125)])
+def test_a_motor_that_cannot_reach_its_velocity_in_a_step_gives_its_whole_torque(tmp_path, damping, first):
+    # 20 rad/s within one 32 ms step takes 0.005 x 20 / 0.032 = 3.125 N m on the free arm: ODE's motor gives just
+    # that. Against a damping of 10 it would take 200 N m more: ODE's motor gives its maxTorque, 30, the whole step
+    # (wbtc's capped servo used to ease off as the arm sped up: 25.5 on average).
+    world = tmp_path / "arm.wbt"
+    world.write_text(SATURATING % damping)
+    result, _ = compile_world(world)
+    simulation = Simulation(result, noise=False)
+    try:
+        apply_commands(simulation, simulation.robots[0], [(0, "enableTorqueFeedback", 32),
+                                                          (0, "setPosition", float("inf")), (0, "setVelocity", 20.0)])
+        values = _feedback(simulation, 2)
+        assert values[0] == pytest.approx(first, rel=0.02)
+        if damping:
+            # 30 N m against 10 N m s/rad: the arm runs at 3 rad/s, and the motor keeps giving all it has.
+            assert values[1] == pytest.approx(30.0, abs=1e-6)
+            assert simulation.data.qvel[0] == pytest.approx(3.0, abs=0.01)
+        else:
+            assert simulation.data.qvel[0] == pytest.approx(20.0, abs=0.05)
+    finally:
+        simulation.close()

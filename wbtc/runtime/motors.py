@@ -14,6 +14,10 @@ which the contact solver then sees, as ODE solves its motors with the contacts):
   Webots adds the torque to the bodies (`dJointAddHingeTorque`), outside the joint feedback it reads,
   so a free joint reads about 0, not the command.
 
+A motor that cannot reach its velocity within the step even with its whole available torque (the
+joint's inertia, bias forces and damping say so; contacts are not counted) gives that torque for the
+whole step instead, as ODE's force-limited motor does (`_saturate`).
+
 An untouched motor targets the joint's initial position, so it holds the joint (Webots' rule).
 
 Brake devices add their damping constant to their joint's damping (see commands).
@@ -32,6 +36,7 @@ import sys
 from typing import Any
 
 import mujoco
+import numpy as np
 
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime import kinematic_motors
@@ -77,6 +82,7 @@ class Motor:
         self.metered = False  # a battery counts this motor's effort: keep its mean force per step too
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
+        self._unit: np.ndarray | None = None  # a unit vector on the joint's dof (`_saturate`)
         # (MjData, MjModel, qpos, qvel, ctrl, dof_damping): views made once per MjData and MjModel.
         self._views: tuple[Any, ...] = (None, None)
 
@@ -132,6 +138,8 @@ class Motor:
         wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
         velocity = float(qvel[self.dof_adr])
         self._limit_gain(velocity, wanted)
+        if self.gain < self.kv and self._saturate(model, data, wanted, velocity, ts):
+            return
         if self._written[0] is not model or self._written[1] != self.gain:
             model.actuator_gainprm[a, 0] = self.gain
             model.actuator_biasprm[a, 2] = -self.gain
@@ -139,6 +147,44 @@ class Motor:
             model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
             self._written = (model, self.gain)
         ctrl[a] = wanted + self._damping_lead(float(damping[self.dof_adr]), velocity, wanted)
+
+    def _saturate(self, model: mujoco.MjModel, data: mujoco.MjData, wanted: float, velocity: float,
+                  ts: float) -> bool:
+        """Push with the whole available torque for this step when the joint cannot reach `wanted` in it.
+
+        ODE solves a motor as a velocity constraint with a force limit: when reaching the velocity within
+        the step takes more than the available torque, the motor gives exactly that torque for the whole
+        step. wbtc's servo, capped at the step's start, would ease off as the joint speeds up. The torque
+        needed is the velocity change over the step times the joint's effective inertia (from MuJoCo's
+        mass matrix, without the servo's own armature), plus the bias forces (gravity, Coriolis) on it and
+        its damping at the velocity asked for, less its other passive forces; contacts are not in it, so a
+        wheel on the floor keeps the servo.
+        """
+        d = self.dof_adr
+        unit = self._unit
+        if unit is None or len(unit) != model.nv:
+            unit = self._unit = np.zeros(model.nv)
+        unit[:] = 0.0
+        unit[d] = 1.0
+        solved = np.zeros(model.nv)
+        mujoco.mj_solveM(model, data, solved.reshape(1, -1), unit.reshape(1, -1))
+        armature = float(model.dof_armature[d])
+        mobility = float(solved[d]) / max(1.0 - armature * float(solved[d]), 1e-12)  # Sherman-Morrison
+        if mobility <= 0.0:
+            return False
+        # The joint's damping counts at the velocity the step ends with (MuJoCo integrates it implicitly).
+        damping = float(model.dof_damping[d])
+        passive = float(data.qfrc_passive[d]) + damping * velocity - damping * wanted
+        needed = (wanted - velocity) / (ts * mobility) + float(data.qfrc_bias[d]) - passive
+        if abs(needed) <= self.available:
+            return False
+        a = self.actuator
+        model.actuator_gainprm[a, 0] = 1.0
+        model.actuator_biasprm[a, 2] = 0.0
+        model.dof_armature[d] = 0.0
+        self._written = (None, math.nan)
+        data.ctrl[a] = math.copysign(self.available, needed)
+        return True
 
     def current_velocity(self) -> float:
         """Webots' current velocity of the motor: the ramped command, or the kinematic joint's speed."""
