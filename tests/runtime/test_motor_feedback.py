@@ -1,4 +1,5 @@
-"""Torque feedback under torque control: only what the joint's stops give, as Webots' joint feedback."""
+"""Torque feedback as Webots' joint feedback: under torque control only the joint's stops; a motor that cannot
+reach its velocity within a step gives its whole torque, as ODE's force-limited motor."""
 
 from pathlib import Path
 
@@ -8,45 +9,50 @@ from wbtc.pipeline import compile_world
 from wbtc.runtime.commands import apply_commands
 from wbtc.runtime.simulation import Simulation
 
-WORLD = """#VRML_SIM R2025a utf8
-WorldInfo {
-  basicTimeStep 16
+#: One arm on a hinge about z, no gravity: (basicTimeStep, joint parameters, maxTorque, inertia about z).
+ARM = """#VRML_SIM R2025a utf8
+WorldInfo {{
+  basicTimeStep {step}
   gravity 0
-}
-Robot {
+}}
+Robot {{
   children [
-    HingeJoint {
-      jointParameters HingeJointParameters {
+    HingeJoint {{
+      jointParameters HingeJointParameters {{
         axis 0 0 1
-        maxStop 0.2
-      }
+        {joint}
+      }}
       device [
-        RotationalMotor {
-          maxTorque 10
-        }
+        RotationalMotor {{
+          maxVelocity 20
+          maxTorque {torque}
+        }}
       ]
-      endPoint Solid {
-        translation 0.1 0 0
-        physics Physics {
+      endPoint Solid {{
+        physics Physics {{
           density -1
           mass 1
           centerOfMass [ 0 0 0 ]
-          inertiaMatrix [ 1 1 1, 0 0 0 ]
-        }
-      }
-    }
+          inertiaMatrix [ {inertia} {inertia} {inertia}, 0 0 0 ]
+        }}
+      }}
+    }}
   ]
   controller "<none>"
-}
+}}
 """
+
+
+def _simulation(folder: Path, **fields: object) -> Simulation:
+    world = folder / "arm.wbt"
+    world.write_text(ARM.format(**fields))
+    result, _ = compile_world(world)
+    return Simulation(result, noise=False)
 
 
 @pytest.fixture
 def sim(tmp_path: Path):
-    world = tmp_path / "arm.wbt"
-    world.write_text(WORLD)
-    result, _ = compile_world(world)
-    simulation = Simulation(result, noise=False)
+    simulation = _simulation(tmp_path, step=16, joint="maxStop 0.2", torque=10, inertia=1)
     yield simulation
     simulation.close()
 
@@ -74,48 +80,13 @@ def test_under_torque_control_a_free_joint_reads_no_torque_then_its_stop(sim):
 
 
 
-SATURATING = """#VRML_SIM R2025a utf8
-WorldInfo {
-  basicTimeStep 32
-  gravity 0
-}
-Robot {
-  children [
-    HingeJoint {
-      jointParameters HingeJointParameters {
-        axis 0 0 1
-        dampingConstant %s
-      }
-      device [
-        RotationalMotor {
-          maxVelocity 20
-          maxTorque 30
-        }
-      ]
-      endPoint Solid {
-        physics Physics {
-          density -1
-          mass 1
-          centerOfMass [ 0 0 0 ]
-          inertiaMatrix [ 0.005 0.005 0.005, 0 0 0 ]
-        }
-      }
-    }
-  ]
-  controller "<none>"
-}
-"""
-
 
 @pytest.mark.parametrize(("damping", "first"), [(10.0, 30.0), (0.0, 3.125)])
 def test_a_motor_that_cannot_reach_its_velocity_in_a_step_gives_its_whole_torque(tmp_path, damping, first):
     # 20 rad/s within one 32 ms step takes 0.005 x 20 / 0.032 = 3.125 N m on the free arm: ODE's motor gives just
     # that. Against a damping of 10 it would take 200 N m more: ODE's motor gives its maxTorque, 30, the whole step
     # (wbtc's capped servo used to ease off as the arm sped up: 25.5 on average).
-    world = tmp_path / "arm.wbt"
-    world.write_text(SATURATING % damping)
-    result, _ = compile_world(world)
-    simulation = Simulation(result, noise=False)
+    simulation = _simulation(tmp_path, step=32, joint=f"dampingConstant {damping}", torque=30, inertia=0.005)
     try:
         apply_commands(simulation, simulation.robots[0], [(0, "enableTorqueFeedback", 32),
                                                           (0, "setPosition", float("inf")), (0, "setVelocity", 20.0)])
