@@ -7,8 +7,10 @@ Values are in the world's own frame (NUE worlds are read back through the table'
   resolution; infra-red rays see the surface colour where they land (see `surface`).
 - PositionSensor: the joint position (noise σ, resolution).
 - InertialUnit: the device's orientation quaternion (x, y, z, w) in the world's frame.
-- Accelerometer: specific force in the device frame (+9.81 up at rest); Gyro: angular velocity;
-  both through their lookup tables, disabled axes NaN.
+- Accelerometer: specific force in the device frame (+9.81 up at rest), as Webots computes it: minus
+  gravity plus the change of the device point's velocity since the previous sample over the sampling
+  period (the previous velocity starts at 0, and a device on a body without physics reads gravity only);
+  Gyro: angular velocity; both through their lookup tables, disabled axes NaN.
 - GPS: position and velocity of the device in the world frame (accuracy σ as Gaussian noise).
 - Compass: the world's north (ENU +y, NUE +x) in the device frame.
 - TouchSensor: bumper 1/0 on contact; force (push along -x) and force-3d from the contact forces
@@ -147,21 +149,36 @@ class Vector3Sensor(Sensor):
         self.axes = [bool(f.get(a, True)) for a in ("xAxis", "yAxis", "zAxis")]
         self.resolution = float(f.get("resolution", -1.0))
         self._res = np.zeros(6)
+        self._velocity = np.zeros(3)  # the device point's world velocity at the previous sample (Webots: 0 first)
+        self.dynamic = entry.type == "Accelerometer" and _moved_by_physics(sim.model, self.body)
 
     def raw(self, sim: Simulation) -> np.ndarray:
         """The vector in the device frame before the lookup table."""
         kind = self.entry.type
+        _, mat = self.frame(sim)
         if kind == "Compass":
-            _, mat = self.frame(sim)
             return mat.T @ sim.north
-        flag = 1
         if kind == "Accelerometer":
-            mujoco.mj_rnePostConstraint(sim.model, sim.data)
-            mujoco.mj_objectAcceleration(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, flag)
-        else:
-            mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, flag)
-        # MuJoCo's 6D vectors are [angular, linear]; cacc holds −gravity, so this is specific force.
-        return self._res[3:].copy() if kind == "Accelerometer" else self._res[:3].copy()
+            return mat.T @ self._specific_force(sim)
+        mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, 1)
+        return self._res[:3].copy()  # MuJoCo's 6D vectors are [angular, linear]
+
+    def _specific_force(self, sim: Simulation) -> np.ndarray:
+        """Minus gravity plus the device point's velocity change over the sampling period (world frame).
+
+        Webots (WbAccelerometer) differences the point's velocity between two samples rather than reading
+        an instantaneous acceleration: a turning body reads the chord of its velocity, and a contact's
+        impulse is spread over the period.
+        """
+        force = -np.asarray(sim.model.opt.gravity, dtype=float)
+        if not self.dynamic:
+            return force  # no body in ODE: gravity alone
+        mujoco.mj_objectVelocity(sim.model, sim.data, mujoco.mjtObj.mjOBJ_SITE, self.site, self._res, 0)
+        velocity = self._res[3:].copy()
+        if self.period > 0:
+            force += (velocity - self._velocity) * 1000.0 / self.period
+        self._velocity = velocity
+        return force
 
     def sample(self, sim: Simulation) -> list[float]:
         """Lookup table on each enabled axis."""
