@@ -1,4 +1,5 @@
-"""`wbtc check` says what would stop `wbtc run`: compile errors and controllers it cannot start."""
+"""`wbtc check` says what would stop `wbtc run`: compile errors, texture and mesh files it cannot read, and controllers
+it cannot start."""
 
 import json
 from pathlib import Path
@@ -81,3 +82,32 @@ def test_check_reports_a_compile_error_where_it_points(tmp_path, monkeypatch):
     assert result.exit_code == 0
     assert json.loads(result.stdout)["warnings"] == [
         f"{world}:2:1: warning: MuJoCo cannot compile the model: something"]
+
+
+FILES = """#VRML_SIM R2025a utf8
+Solid {
+  children [
+    Shape {
+      appearance Appearance { texture ImageTexture { url [ "textures/missing.png" ] } }
+      geometry Box { size 1 1 1 }
+    }
+    Shape {
+      appearance PBRAppearance { baseColorMap ImageTexture { url [ "webots://projects/x/floor.png" ] } }
+      geometry Mesh { url [ "meshes/gone.obj" ] }
+    }
+  ]
+}
+"""
+
+
+def test_check_names_the_texture_and_mesh_files_it_cannot_read(tmp_path):
+    world = tmp_path / "w.wbt"
+    world.write_text(FILES, encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(world), "--json"])
+    assert result.exit_code == 0, result.output
+    assert json.loads(result.stdout)["warnings"] == [
+        f"{world}:5:39: warning: the texture 'textures/missing.png' cannot be found; the shape keeps its plain colour",
+        f"{world}:9:47: warning: the texture 'webots://projects/x/floor.png' cannot be found (WBTC_OFFLINE is set); "
+        "the shape keeps its plain colour",
+        f"{world}:10:16: warning: Mesh file not found: 'meshes/gone.obj' (relative to {tmp_path})",
+    ]

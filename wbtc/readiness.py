@@ -1,8 +1,10 @@
 """What would stop `wbtc run` from running a world as its author meant: `wbtc check`'s run checks.
 
-Two checks, each a warning with the location of the node it is about (an error with `--strict`):
+Three checks, each a warning with the location of the node it is about (an error with `--strict`):
 
 - the world compiles (MuJoCo accepts the model); a compile error is reported where it points;
+- every texture and mesh file it names can be read (a local file that is missing, a `webots://` or
+  `http(s)://` one that is neither installed, cached nor downloadable: `wbtc.compile.remote`);
 - every robot's controller is a Python controller wbtc can start: found as Webots looks for it
   (`controllers/NAME/NAME.py` beside the world's folder, or in it), else said why not: only C, C++,
   Java or MATLAB sources are there, the Python file sits at `controllers/NAME.py`, or nothing is.
@@ -19,6 +21,9 @@ from pathlib import Path
 from wbtc.errors import Diagnostic, Span, WbtcError
 from wbtc.runtime.controllers import NO_CONTROLLER, controller_folders, find_controller
 from wbtc.scene.model import Node, Scene
+
+#: How the compiler's warnings about a texture or mesh file it could not read begin or say.
+_UNREADABLE = ("the texture '", "Mesh file not found:", "Mesh url '", "cannot read mesh file")
 
 #: Source files of the languages wbtc does not run, by the suffix Webots looks for.
 _OTHER_LANGUAGES = {".c": "C", ".cpp": "C++", ".cc": "C++", ".java": "Java", ".m": "MATLAB"}
@@ -38,10 +43,10 @@ def _compile_check(scene: Scene) -> list[Diagnostic]:
     from wbtc.compile.compiler import compile_scene
 
     try:
-        compile_scene(scene)
+        result = compile_scene(scene)
     except WbtcError as exc:
         return [Diagnostic(d.message, d.span, "warning", d.hint) for d in exc.diagnostics]
-    return []
+    return [w for w in result.warnings if any(marker in w.message for marker in _UNREADABLE)]
 
 
 def _robots(scene: Scene) -> list[Node]:
