@@ -1,4 +1,4 @@
-"""Pen: ink on textured shapes, with Webots' stroke size, blending, reach and paint layer."""
+"""Pen: ink on shapes, with Webots' stroke size, blending, reach and paint layer."""
 
 from pathlib import Path
 
@@ -145,14 +145,31 @@ def test_no_ink_beyond_max_distance_and_ink_within_it(pen_world):
     assert int(np.any(pixels != 255, axis=2).sum()) == 49
 
 
-def test_an_untextured_shape_gets_no_ink(pen_world):
+def test_an_untextured_shape_gets_ink_on_a_layer_of_webots_default_size(pen_world):
     sim, robot, tags = pen_world
-    before = sim.model.tex_data.copy()
+    _, layer = _texture(sim, _paintable(sim, "plain"))
+    # A 0.1 m Box: bounding radius 0.0866 m, so Webots' default side 32 + 992 x 0.0866 / 10 = 40.6 texels, the
+    # nearest power of two 32, x (4, 2) for a Box's faces; in the shape's own colour (white here), which the
+    # material no longer multiplies.
+    assert layer.shape == (64, 128, 3) and (layer == 255).all()
+    geom = sim.model.geom(_paintable(sim, "plain"))
+    assert sim.model.mat_rgba[geom.matid[0]].tolist() == [1.0, 1.0, 1.0, 1.0]
     apply_commands(sim, robot, [(tags["untextured"], "write", True)])
     sim.step()
-    assert not sim.canvases and not sim.texture_versions
-    assert (sim.model.tex_data == before).all()
-    assert all(sim.model.geom(name).bodyid != sim.model.body("plain").id for name in sim.table.paintable)
+    # leadSize 0.1 x 32 / 0.0866 = 36 texels across: a disc of radius 18 about the top face's centre (16, 16),
+    # clipped by the layer's edge (not by the face's slot, as Webots' layer is one image); ink density 0.5 of
+    # red over white, blended in linear light: (255, 188, 188).
+    inked = np.any(layer != 255, axis=2)
+    rows, cols = np.nonzero(inked)
+    assert (rows.min(), rows.max(), cols.min(), cols.max()) == (0, 34, 0, 34)
+    assert int(inked.sum()) == 985
+    assert {tuple(v) for v in layer[inked].tolist()} == {(255, 188, 188)}
+
+
+def test_default_layer_sizes():
+    from wbtc.compile.paintable import default_size
+
+    assert [default_size(r) for r in (0.0, 0.1, 0.7071, 3.0, 5.0, 10.0, 25.0)] == [32, 32, 128, 256, 512, 1024, 1024]
 
 
 def test_ink_on_a_box_face_stays_on_that_face(pen_world):
@@ -201,7 +218,7 @@ def test_primitive_meshes_face_outwards_and_fill_their_layer_slots():
 def test_shapes_sharing_an_image_each_get_their_own_texture(pen_world):
     sim, _, _ = pen_world
     textures = [entry[0] for entry in sim.table.paintable.values()]
-    assert len(textures) == 2 and len(set(textures)) == 2
+    assert len(textures) == 3 and len(set(textures)) == 3  # the board, the cube, and the untextured box
     # The plane's stroke scale: 64 texels / its bounding radius (half its diagonal, 0.7071 m).
     assert sim.table.paintable[_paintable(sim, "board")][1] == pytest.approx(64 / np.sqrt(0.5), rel=1e-6)
 

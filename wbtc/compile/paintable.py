@@ -1,9 +1,11 @@
 """Shapes a Pen can paint: each gets a texture and material of its own, and a mesh with Webots' mapping.
 
-Webots paints ink on the Shape a pen's ray meets, when that Shape shows an ImageTexture (an
-Appearance's `texture` or a PBRAppearance's `baseColorMap`); the ink stays on that shape, not on
-the image file other shapes share. So, in a world that has at least one Pen, every textured visual
-Shape is compiled with:
+Webots paints ink on any Shape with a geometry a pen's ray meets (WbPaintTexture::isPaintable); the
+ink stays on that shape, not on the image file other shapes share. A textured Shape's layer has its
+image's size; an untextured one gets a layer of Webots' default size (`default_size`: 32 texels for
+a small shape up to 1,024 for one whose bounding sphere's radius is 10 m, the nearest power of two)
+in its own colour, which the material then no longer multiplies. So, in a world that has at least
+one Pen, every visual Shape is compiled with:
 
 - a MuJoCo texture of its own, Webots' paint layer with the image drawn in (`primitive_uv`: a Box's
   faces each get their own part of it; `faceset_uv`: an IndexedFaceSet without texture coordinates
@@ -19,19 +21,22 @@ metre of lead covers, the texture's texels per texel of Webots' layer and the ge
 Worlds without a Pen compile as before.
 
 Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); a Mesh
-whose file has no texture coordinates gets no ink (Webots paints it on a layer 4 x 2 times the
-image's size too); cameras sample the whole texture texel by texel (`offscreen`), where Webots filters the image and
+whose file has no texture coordinates, or an untextured Mesh, gets no ink (Webots paints it on a layer
+4 x 2 times the image's size too); an untextured shape's default size ignores a Transform's scale;
+a supervisor's change of an untextured paintable shape's colour multiplies its layer's colour;
+cameras sample the whole texture texel by texel (`offscreen`), where Webots filters the image and
 samples only the ink so.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import mujoco
 import numpy as np
 
-from wbtc.compile import faceset_uv, primitive_uv, textures
+from wbtc.compile import faceset, faceset_uv, primitive_uv, textures
 from wbtc.compile.context import CompileContext
 from wbtc.scene.model import Node
 
@@ -72,14 +77,16 @@ class PaintSetup:
     zoom: float = 1.0
 
 
-def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> PaintSetup | None:
-    """The material, texture and mesh that make a textured Shape paintable (None: it cannot be).
+def prepare(ctx: CompileContext, shape: Node, material: str, path: str | None,
+            colour: np.ndarray | None = None) -> PaintSetup | None:
+    """The material, texture and mesh that make a Shape paintable (None: it cannot be).
 
     Args:
         ctx: the compile context.
         shape: the Shape.
         material: the appearance's material (as `appearance.shape_look` made it).
-        path: the ImageTexture's file.
+        path: the ImageTexture's file; None for an untextured shape, whose layer is `colour`.
+        colour: an untextured shape's rgba (0-1, sRGB, as `appearance.shape_look` gives it).
 
     Returns:
         None when the image cannot be read or the geometry is not one a pen paints (the shape then
@@ -96,17 +103,27 @@ def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> Paint
     elif geometry.base_type == "IndexedFaceSet":
         # None: its own texture coordinates address a layer of the image's size (Webots' size factor 1).
         painted = faceset_uv.painted_faceset(geometry, ctx.warnings)
-    elif geometry.base_type != "Mesh":
+    elif geometry.base_type != "Mesh" or path is None:
         return None
-    try:
-        image = textures.load_texture(path)
-    except OSError:
-        return None
+    if path is None:
+        radius = _radius(painted.mesh.vertices if painted is not None else faceset.coordinates(geometry))
+        if radius is None or colour is None:
+            return None
+        size = default_size(radius)
+        pixels = np.empty((size, size, 3), dtype=np.uint8)
+        pixels[:] = np.round(np.clip(np.asarray(colour[:3], dtype=float), 0.0, 1.0) * 255.0).astype(np.uint8)
+        width = size
+    else:
+        try:
+            image = textures.load_texture(path)
+        except OSError:
+            return None
+        pixels = np.dstack([image.rgb, image.alpha_values]) if image.alpha and image.alpha_values is not None \
+            else image.rgb
+        width = image.width
     # The texture's name starts with "paint_": cameras sample it without mipmaps (offscreen.PAINT_TEXTURE_PREFIX).
     base = f"paint_{shape.span.line}"
     texture = ctx.spec.add_texture(name=ctx.unique("texture", base), type=mujoco.mjtTexture.mjTEXTURE_2D)
-    pixels = np.dstack([image.rgb, image.alpha_values]) if image.alpha and image.alpha_values is not None \
-        else image.rgb
     zoom = 1.0
     if painted is not None:
         look = shape.get("appearance")
@@ -115,8 +132,34 @@ def prepare(ctx: CompileContext, shape: Node, material: str, path: str) -> Paint
     # RGB(A) rows from the top of the image, as MuJoCo stores a PNG it reads itself.
     texture.height, texture.width, texture.nchannel = pixels.shape
     texture.data = np.ascontiguousarray(pixels, dtype=np.uint8).tobytes()
-    ctx.texture_paths[texture.name] = path
-    return PaintSetup(_copy_material(ctx, material, texture.name, base), texture.name, painted, image.width, zoom)
+    copy = _copy_material(ctx, material, texture.name, base)
+    if path is not None:
+        ctx.texture_paths[texture.name] = path
+    else:
+        # The layer carries the colour now: the material no longer multiplies it (its alpha stays).
+        ctx.spec.material(copy).rgba = [1.0, 1.0, 1.0, float(colour[3])]
+    return PaintSetup(copy, texture.name, painted, width, zoom)
+
+
+def default_size(radius: float) -> int:
+    """Webots' paint layer side for an untextured shape whose bounding sphere has this radius (m).
+
+    32 texels plus 992 per 10 m of radius (1,024 from 10 m on), rounded to the nearest power of two
+    (WbPaintTexture::computeDefaultTextureSize; half-way goes up).
+    """
+    size = 1024.0 if radius > 10.0 else 32.0 + (1024.0 - 32.0) * radius / 10.0
+    upper = 1 << max(0, math.ceil(math.log2(max(size, 1.0))))
+    lower = upper // 2
+    return lower if abs(upper - size) > abs(lower - size) else upper
+
+
+def _radius(points: np.ndarray | None) -> float | None:
+    """The radius of the sphere about the points' bounding box centre that holds them all."""
+    if points is None or not len(points):
+        return None
+    vertices = np.asarray(points, dtype=float).reshape(-1, 3)
+    centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2
+    return float(np.linalg.norm(vertices - centre, axis=1).max())
 
 
 def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | None) -> tuple[np.ndarray, float]:
@@ -186,11 +229,9 @@ def register(ctx: CompileContext, geom: mujoco.MjsGeom, setup: PaintSetup, shape
     mesh = ctx.spec.mesh(geom.meshname) if geom.meshname else None
     if mesh is None:
         return
-    vertices = np.asarray(mesh.uservert, dtype=float).reshape(-1, 3)
-    if not len(vertices):
+    radius = _radius(np.asarray(mesh.uservert, dtype=float))
+    if radius is None:
         return
-    centre = (vertices.min(axis=0) + vertices.max(axis=0)) / 2
-    radius = float(np.linalg.norm(vertices - centre, axis=1).max())
     geometry = shape.get("geometry")
     kind = geometry.base_type if isinstance(geometry, Node) else ""
     ctx.table.paintable[geom.name] = (setup.texture, setup.image_width / max(radius, 1e-9), setup.zoom, kind)

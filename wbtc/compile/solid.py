@@ -155,9 +155,11 @@ class BodyBuilder:
         rgba, material, path = appearance.shape_look(shape, self.ctx)
         look = shape.get("appearance")
         transform = look.get("textureTransform") if isinstance(look, Node) else None
-        # In a world with a Pen, a textured shape gets a texture of its own and Webots' mapping (paintable).
-        own = paintable.prepare(self.ctx, shape, material, path) \
-            if path is not None and material is not None and paintable.enabled(self.ctx) else None
+        # In a world with a Pen, a shape gets a texture of its own and Webots' mapping (paintable).
+        own = paintable.prepare(self.ctx, shape, material, path, rgba) \
+            if material is not None and paintable.enabled(self.ctx) else None
+        if own is not None and path is None:
+            rgba = np.array([1.0, 1.0, 1.0, rgba[3]])  # its layer carries its colour
         made = geometry.add_geometry(body, geom_node, frame, self.ctx, collision=False, rgba=rgba,
                                      material=own.material if own else material, name=name,
                                      texture_transform=transform if isinstance(transform, Node) else None,

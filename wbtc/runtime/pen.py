@@ -1,13 +1,13 @@
-"""A Pen in the simulator: while it writes, it inks the textured shape it points at, every step.
+"""A Pen in the simulator: while it writes, it inks the shape it points at, every step.
 
 Each basic step, a Pen whose `write` is on casts a ray from its origin along its writing direction
 (Webots: the node's -z axis; -y in files older than R2022a, whose devices looked along -z with y up)
 through the visual shapes, its own body excepted. Where the ray first meets a shape within
-`maxDistance` (0: no limit) and that shape is paintable (a textured Shape of a world with a Pen gets
-a texture of its own, Webots' paint layer: `compile.paintable`), Webots' stroke is painted into the
-layer around the hit's texture coordinate (`pen_uv`): a disc whose diameter is `leadSize` x the
-image's width / the radius of the geometry's bounding sphere, in texels, with `inkDensity` as the
-stroke's opacity.
+`maxDistance` (0: no limit) and that shape is paintable (every Shape of a world with a Pen gets a
+texture of its own, Webots' paint layer, an untextured one in its colour: `compile.paintable`),
+Webots' stroke is painted into the layer around the hit's texture coordinate (`pen_uv`): a disc
+whose diameter is `leadSize` x the image's width (an untextured shape's default layer side) / the
+radius of the geometry's bounding sphere, in texels, with `inkDensity` as the stroke's opacity.
 
 Colour conventions: the model's textures hold sRGB bytes (cameras linearise them at upload:
 `offscreen`), while Webots lays a paint layer over the texture and blends it in linear light, the ink's
