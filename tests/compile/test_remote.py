@@ -108,6 +108,9 @@ def test_offline_and_webots_home(tmp_path: Path, online: Path, monkeypatch: pyte
     looked_at: list[str] = []
     assert remote.local_copy("webots://textures/red.png", [looked_at]) == str(home / "textures" / "red.png")
     assert looked_at == [str(home / "textures" / "red.png")]
+    # A release's repository address stands for the same file of the installation, whatever its tag.
+    release = "https://raw.githubusercontent.com/cyberbotics/webots/R2022b/textures/red.png"
+    assert remote.local_copy(release) == str(home / "textures" / "red.png")
 
 
 WORLD = """#VRML_SIM R2025a utf8

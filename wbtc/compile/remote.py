@@ -2,8 +2,9 @@
 
 What it maps: a url entry that names no local file ->
 
-* `webots://PATH` -> `$WEBOTS_HOME/PATH` when a Webots installation (or a checkout of Webots'
-  repository) is named by `WEBOTS_HOME` and holds it, as Webots reads its own installation first;
+* `webots://PATH` (and `https://raw.githubusercontent.com/cyberbotics/webots/TAG/PATH`) ->
+  `$WEBOTS_HOME/PATH` when a Webots installation (or a checkout of Webots' repository) is named by
+  `WEBOTS_HOME` and holds it, as Webots reads its own installation first;
 * otherwise a copy in wbtc's asset cache, downloaded once from Webots' repository at the release wbtc
   follows (`webots://PATH` -> `https://raw.githubusercontent.com/cyberbotics/webots/R2025a/PATH`, as
   a Webots without that asset installed downloads it from its own release), and any `http(s)://` URL
@@ -110,12 +111,27 @@ def _cache_root() -> Path:
     return Path(base) / "wbtc" / "assets"
 
 
+#: The address of a file of a Webots release in its repository: the part after the tag is the path
+#: within an installation.
+_RELEASE_PREFIX = "https://raw.githubusercontent.com/cyberbotics/webots/"
+
+
 def _installed(url: str) -> str | None:
-    """The path of a `webots://` asset in the Webots installation `WEBOTS_HOME` names, if any."""
+    """The path of an asset in the Webots installation `WEBOTS_HOME` names, if any.
+
+    A `webots://` asset, or a file of a Webots release named by its repository address (any tag: the
+    installation stands for it).
+    """
     home = os.environ.get("WEBOTS_HOME")
-    if not home or not url.startswith("webots://"):
+    if not home:
         return None
-    return os.path.normpath(os.path.join(home, url[len("webots://"):].lstrip("/")))
+    if url.startswith("webots://"):
+        relative = url[len("webots://"):]
+    elif url.startswith(_RELEASE_PREFIX) and "/" in url[len(_RELEASE_PREFIX):]:
+        relative = url[len(_RELEASE_PREFIX):].split("/", 1)[1]
+    else:
+        return None
+    return os.path.normpath(os.path.join(home, relative.lstrip("/")))
 
 
 def _download(address: str, target: Path, url: str) -> bool:
