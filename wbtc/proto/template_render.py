@@ -29,7 +29,7 @@ _RENDERED: dict[tuple[Any, ...], str] = {}
 _FIELD_NAMES = re.compile(r"fields\s*\.\s*([A-Za-z_][A-Za-z0-9_]*)")
 #: A template that names its temporary folder, or may read or write files (Lua's io, Lua-GD), gets the
 #: folder: Webots runs Lua templates in it, so a relative file name lands there.
-_USES_FILES = re.compile(r"temporary_files_path|\bio\s*\.|require\s*\(?\s*['\"](?:gd|io)['\"]")
+_USES_FILES = re.compile(r"temporary_files_path|\bio\s*\.\s*(?:open|lines)\b|require\s*\(?\s*['\"]gd['\"]")
 
 
 @lru_cache(maxsize=256)
