@@ -32,7 +32,7 @@ _MOTOR_STATE = ("gain", "p", "i", "d", "acceleration", "target", "velocity", "av
                 "prev_error", "command", "kinematic_velocity", "feedback_period", "feedback_due", "feedback_value")
 # `period` before `image_period`: a Camera's period is a property over its image and recognition periods.
 _SENSOR_STATE = ("period", "next_due", "value", "fresh", "image_period", "recognition_period", "recognition_due",
-                 "segmentation_enabled")
+                 "segmentation_enabled", "_velocity")  # _velocity: an Accelerometer's last sampled velocity
 
 
 def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, by_name: bool = False) -> None:
