@@ -197,6 +197,7 @@ class Canvas:
 
     def __init__(self, srgb: np.ndarray) -> None:
         self.base = tone.linear(srgb / 255.0).astype(np.float32)  # the texture's own linear colours
+        self.original_red = (srgb[..., 0] / 255.0).astype(np.float32)  # as written, for infra-red (`surface`)
         self.ink = np.zeros_like(self.base)
         self.coverage = np.zeros(self.base.shape[:2], dtype=np.float32)
 

@@ -59,9 +59,9 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
     sim.kinematic = {names[old_model.body(b).name]: v for b, v in sim.kinematic.items()
                      if old_model.body(b).name in names}
     sim.rays = RayCaster(model, data)
-    sim.surface = SurfaceColours(model, result.table.infrared)
     sim.texture_versions = {}  # the new model's textures are as compiled; displays write theirs again
     sim.canvases = {}  # and pens' ink is gone with the old model's textures
+    sim.surface = SurfaceColours(model, result.table.infrared, sim.canvases)
     mujoco.mj_forward(model, data)
     by_node = {id(robot.entry.node): robot for robot in old_robots}
     by_robot_name = {robot.entry.name: robot for robot in old_robots} if by_name else {}

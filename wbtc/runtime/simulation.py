@@ -88,9 +88,10 @@ class Simulation:
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if noise else None
         self.rays = RayCaster(self.model, self.data)
-        self.surface = SurfaceColours(self.model, self.table.infrared)  # what infra-red rays see where they land
+        self.canvases: dict[int, Any] = {}  # textures pens painted: tex id -> its Canvas (runtime.pen)
         self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
-        self.canvases: dict[int, np.ndarray] = {}  # textures pens painted: tex id -> linear colours (runtime.pen)
+        # What infra-red rays see where they land (pens' ink included).
+        self.surface = SurfaceColours(self.model, self.table.infrared, self.canvases)
         self.invisible: dict[int, set[int]] = {}  # geoms a camera does not draw (Node.setVisibility): cam -> geoms
         self.hidden: dict[tuple[int, int], tuple[Any, Any]] = {}  # (node, viewer) pairs behind `invisible`
         self.keys_down: list[int] = []

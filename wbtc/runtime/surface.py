@@ -8,7 +8,8 @@ a ground sensor reads agree:
 - the base red is the geom's rgba, or its material's when the geom's is MuJoCo's default grey (the
   renderer's rule), read at every call so LEDs lit and colours set during the run count; a
   PBRAppearance's red counts (1 − 0.5·roughness) times, as in Webots;
-- a 2D RGB texture is sampled at the texel under the hit point (nearest texel, repeating), with
+- a 2D RGB texture is sampled at the texel under the hit point (nearest texel, repeating; a texel a
+  Pen inked reads Webots' mix of its ink and the texture, not its shown colour), with
   MuJoCo's texture coordinates for the geom type: a finite plane spans the image once from its
   (-x, +y) corner (image top-left) to (+x, -y); an infinite plane repeats every 2 m, shifted by
   half an image; a box maps each face like that (x faces from (y, z), y faces from (x, z),
@@ -24,6 +25,7 @@ without texture coordinates and cube textures (the texture's mean red is used); 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -50,8 +52,11 @@ class _MeshFaces:
 class SurfaceColours:
     """Red levels of a model's visual surfaces at given points (see the module docstring)."""
 
-    def __init__(self, model: mujoco.MjModel, infrared: dict[str, float] | None = None) -> None:
+    def __init__(self, model: mujoco.MjModel, infrared: dict[str, float] | None = None,
+                 canvases: dict[int, Any] | None = None) -> None:
         self.model = model
+        #: Pens' paint layers by texture id (`runtime.pen.Canvas`): a painted texel reads as Webots picks it.
+        self.canvases = canvases if canvases is not None else {}
         # Webots' PBR term: a rough surface shows infra-red sensors less of its red (1 − 0.5·roughness).
         self.factor = np.ones(model.nmat)
         for name, factor in (infrared or {}).items():
@@ -136,6 +141,12 @@ class SurfaceColours:
 
     def _red_channel(self, tex: int) -> np.ndarray:
         red = self._reds.get(tex)
+        if red is None and tex in self.canvases:
+            # Webots (WbShape::pickColor) mixes the paint layer over the texture as written, not in linear
+            # light as cameras show it: (1 − coverage) · texture + coverage · ink.
+            canvas = self.canvases[tex]
+            red = self._reds[tex] = ((1.0 - canvas.coverage) * canvas.original_red
+                                     + canvas.coverage * canvas.ink[..., 0]).astype(float)
         if red is None:
             model = self.model
             width, height, channels = (int(model.tex_width[tex]), int(model.tex_height[tex]),
