@@ -30,7 +30,7 @@ import math
 import mujoco
 import numpy as np
 
-from wbtc.compile import display_texture, textures
+from wbtc.compile import display_texture, remote, textures
 from wbtc.compile.context import CompileContext, info
 from wbtc.scene.model import Node
 
@@ -59,7 +59,7 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
         urls = [str(u) for u in texture_node.get("url") or []]
         path = textures.resolve_url(urls, texture_node.span.file)
         if path is None and urls:
-            why = f" ({textures.remote.failure(urls[0])})" if textures.remote.is_remote(urls[0]) else ""
+            why = f" ({remote.failure(urls[0])})" if remote.is_remote(urls[0]) else ""
             ctx.warn(f"the texture {urls[0]!r} cannot be found{why}; the shape keeps its plain colour",
                      texture_node.span)
     shown = display_texture.display_texture(ctx, texture_node, path) if isinstance(texture_node, Node) else None
@@ -141,23 +141,27 @@ def unlit(node: Node) -> bool:
     return node.base_type == "Appearance" and not isinstance(node.get("material"), Node)
 
 
-def _camera_terms(node: Node) -> tuple[float, float]:
-    """(k, a): how Webots' shaders scale a material's linear colour for direct light (k) and ambient (a).
+def _camera_terms(node: Node) -> tuple[float, float, float]:
+    """(k, a, g): how Webots' shaders scale a material's linear colour: direct light, ambient, own glow.
+
+    k scales it for direct light and a for ambient light; g is the share of the colour shown whatever the
+    lights (1 unlit, else 0).
 
     A Phong Material reflects direct light at its colour: k = 1; an unlit appearance reflects none (k is
-    `UNLIT_K`, and `world.set_ambient` gives it its colour as emission). Webots'
+    `UNLIT_K`, a is 0) and shows its colour itself (g = 1, which `world.set_ambient` turns into emission).
+    Webots'
     PBR shader reflects it at (1 − 0.04)·(1 − metalness)/π of its base colour (Lambert's 1/π, no π in its
     light intensities), and the Background's uniform light at (1 − 0.04)·(1 − metalness) plus, for
     metals, about their base colour again (the sky's specular reflection): a. k is floored so that a
     full metal keeps a colour for its ambient to scale (MuJoCo's emission multiplies the colour).
     """
     if unlit(node):
-        return UNLIT_K, 0.0
+        return UNLIT_K, 0.0, 1.0
     if node.base_type != "PBRAppearance":
-        return 1.0, 1.0
+        return 1.0, 1.0, 0.0
     metalness = float(np.clip(float(node.get("metalness")), 0.0, 1.0))
     diffuse = 0.96 * (1.0 - metalness)
-    return max(diffuse / math.pi, 0.01), diffuse + metalness
+    return max(diffuse / math.pi, 0.01), diffuse + metalness, 0.0
 
 
 def _ambient_role(node: Node) -> float | None:

@@ -57,7 +57,7 @@ class CompileContext:
     #: For each MuJoCo material: its Phong Material's ambientIntensity, or None for a PBRAppearance or a
     #: shape without Material (lit by the Background); `world.set_ambient` turns it into emission.
     ambient_roles: dict[str, float | None] = field(default_factory=dict)
-    camera_terms: dict[str, tuple[float, float]] = field(default_factory=dict)  # see appearance._camera_terms
+    camera_terms: dict[str, tuple[float, float, float]] = field(default_factory=dict)  # appearance._camera_terms
     paint: bool | None = None  # the world has a Pen: textured shapes are compiled paintable (see `paintable`)
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)

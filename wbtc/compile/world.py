@@ -31,7 +31,6 @@ import mujoco
 import numpy as np
 
 from wbtc.compile import contact
-from wbtc.compile.appearance import UNLIT_K
 from wbtc.compile.context import CompileContext, info
 from wbtc.compile.device import CAMERA_QUAT
 from wbtc.compile.frames import IDENTITY_QUAT, NUE_TO_ENU, NUE_TO_ENU_QUAT, Frame, axis_angle_quat, quat_mul
@@ -150,12 +149,11 @@ def set_ambient(background: Node | None, ctx: CompileContext) -> None:
         # from sRGB to linear, its ambient (ambientIntensity × diffuseColor) included, so the lights'
         # ambient gives Σ ambientIntensity × lin(ambientIntensity) of the linear colour (lin(a·d) ≈
         # lin(a)·lin(d)); the Background's light on PBR is already radiance; emission is linearised too.
-        # Cameras draw the colour × k and the emission ÷ k (see appearance._camera_terms).
-        k, scale = ctx.camera_terms.get(name, (1.0, 1.0))
+        # Cameras draw the colour × k and the emission ÷ k (see appearance._camera_terms); an unlit
+        # material's own share (glow) is drawn as emission.
+        k, scale, glow = ctx.camera_terms.get(name, (1.0, 1.0, 0.0))
         lit = image_light if role is None else own / MATERIAL_AMBIENT * srgb_to_linear(role)
-        if k == UNLIT_K:
-            lit, scale, emissive = 0.0, 0.0, 1.0  # drawn at its own colour: an emission of 1
-        ctx.table.camera_light[name] = ((lit * scale + srgb_to_linear(emissive)) / k, k)
+        ctx.table.camera_light[name] = ((lit * scale + srgb_to_linear(emissive) + glow) / k, k)
 
 
 def srgb_to_linear(value: float) -> float:
