@@ -23,6 +23,10 @@ class Span:
         return f"{self.file}:{self.line}:{self.column}"
 
 
+#: `Diagnostic.topic` of a warning about a texture or mesh file that cannot be read (`wbtc check` lists them).
+UNREADABLE_FILE = "unreadable file"
+
+
 @dataclass(frozen=True, slots=True)
 class Diagnostic:
     """One error or warning at one place.
@@ -33,6 +37,7 @@ class Diagnostic:
         severity: "error" or "warning".
         hint: an optional second sentence, such as a "did you mean" suggestion.
         source_line: the text of the offending line when the file is not on disk (snippets).
+        topic: what kind of problem it is, for callers that pick some out (`UNREADABLE_FILE`), or None.
     """
 
     message: str
@@ -40,6 +45,7 @@ class Diagnostic:
     severity: str = "error"
     hint: str | None = None
     source_line: str | None = field(default=None, compare=False)
+    topic: str | None = field(default=None, compare=False)
 
     def __str__(self) -> str:
         where = f"{self.span}: " if self.span else ""

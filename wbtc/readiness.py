@@ -18,12 +18,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from wbtc.errors import Diagnostic, Span, WbtcError
+from wbtc.errors import UNREADABLE_FILE, Diagnostic, Span, WbtcError
 from wbtc.runtime.controllers import NO_CONTROLLER, controller_folders, find_controller
 from wbtc.scene.model import Node, Scene
-
-#: How the compiler's warnings about a texture or mesh file it could not read begin or say.
-_UNREADABLE = ("the texture '", "Mesh file not found:", "Mesh url '", "cannot read mesh file")
 
 #: Source files of the languages wbtc does not run, by the suffix Webots looks for.
 _OTHER_LANGUAGES = {".c": "C", ".cpp": "C++", ".cc": "C++", ".java": "Java", ".m": "MATLAB"}
@@ -46,7 +43,7 @@ def _compile_check(scene: Scene) -> list[Diagnostic]:
         result = compile_scene(scene)
     except WbtcError as exc:
         return [Diagnostic(d.message, d.span, "warning", d.hint) for d in exc.diagnostics]
-    return [w for w in result.warnings if any(marker in w.message for marker in _UNREADABLE)]
+    return [w for w in result.warnings if w.topic == UNREADABLE_FILE]
 
 
 def _robots(scene: Scene) -> list[Node]:

@@ -32,6 +32,7 @@ import numpy as np
 
 from wbtc.compile import display_texture, remote, textures
 from wbtc.compile.context import CompileContext, info
+from wbtc.errors import UNREADABLE_FILE
 from wbtc.scene.model import Node
 
 _UNHONOURED = frozenset({"roughnessMap", "metalnessMap", "normalMap", "occlusionMap", "emissiveColorMap",
@@ -61,7 +62,7 @@ def shape_look(shape: Node, ctx: CompileContext) -> tuple[np.ndarray, str | None
         if path is None and urls:
             why = f" ({remote.failure(urls[0])})" if remote.is_remote(urls[0]) else ""
             ctx.warn(f"the texture {urls[0]!r} cannot be found{why}; the shape keeps its plain colour",
-                     texture_node.span)
+                     texture_node.span, UNREADABLE_FILE)
     shown = display_texture.display_texture(ctx, texture_node, path) if isinstance(texture_node, Node) else None
     if shown is not None:
         # A Display draws on this texture: a texture of its own at the display's size (no clamp, no file).

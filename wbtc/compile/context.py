@@ -77,9 +77,9 @@ class CompileContext:
         used.add(name)
         return name
 
-    def warn(self, message: str, span: Span | None) -> None:
-        """Record one warning."""
-        self.warnings.append(Diagnostic(message, span, severity="warning"))
+    def warn(self, message: str, span: Span | None, topic: str | None = None) -> None:
+        """Record one warning (`topic`: see `Diagnostic.topic`)."""
+        self.warnings.append(Diagnostic(message, span, severity="warning", topic=topic))
 
     def unhonoured(self, node: Node, names: frozenset[str]) -> None:
         """Warn once per (node type, field) for a written field the compiler does not honour yet."""

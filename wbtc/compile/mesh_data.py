@@ -43,9 +43,9 @@ class MeshData:
         return np.column_stack([self.texcoords[:, 0], 1.0 - self.texcoords[:, 1]]).astype(np.float32)
 
 
-def warn(warnings: list[Diagnostic], node: Any, message: str) -> None:
-    """Append a warning at the node's span."""
-    warnings.append(Diagnostic(message, getattr(node, "span", None), severity="warning"))
+def warn(warnings: list[Diagnostic], node: Any, message: str, topic: str | None = None) -> None:
+    """Append a warning at the node's span (`topic`: see `Diagnostic.topic`)."""
+    warnings.append(Diagnostic(message, getattr(node, "span", None), severity="warning", topic=topic))
 
 
 def finish(warnings: list[Diagnostic], sink: list[Diagnostic] | None) -> None:

@@ -21,12 +21,12 @@ from typing import Any
 import numpy as np
 
 from wbtc.compile.mesh_data import MeshData, finish, warn
-from wbtc.errors import Diagnostic
+from wbtc.errors import UNREADABLE_FILE, Diagnostic
 
 # ---------------------------------------------------------------------------------- Mesh files
 
 #: Loaded mesh files: (absolute path, mtime_ns, name filter) -> (mesh before `ccw`, file warnings).
-_MESH_CACHE: dict[tuple[str, int, str], tuple[MeshData | None, list[str]]] = {}
+_MESH_CACHE: dict[tuple[str, int, str], tuple[MeshData | None, list[tuple[str, str | None]]]] = {}
 
 
 def mesh_file(node: Any, warnings: list[Diagnostic] | None = None) -> MeshData | None:
@@ -58,16 +58,17 @@ def mesh_file(node: Any, warnings: list[Diagnostic] | None = None) -> MeshData |
         remote_urls = [u for u in urls if remote.is_remote(u)]
         if remote_urls:
             warn(found, node, f"Mesh url {remote_urls[0]!r} cannot be read ({remote.failure(remote_urls[0])}; "
-                              "not in WEBOTS_HOME or wbtc's asset cache): no geometry")
+                              "not in WEBOTS_HOME or wbtc's asset cache): no geometry", UNREADABLE_FILE)
         else:
-            warn(found, node, f"Mesh file not found: {urls[0]!r} (relative to {os.path.dirname(base_file) or '.'})")
+            warn(found, node, f"Mesh file not found: {urls[0]!r} (relative to {os.path.dirname(base_file) or '.'})",
+                 UNREADABLE_FILE)
     else:
         materialindex = node.get("materialIndex")
         if materialindex is not None and materialindex >= 0:
             warn(found, node, "Mesh 'materialIndex' is not honoured yet: every sub-mesh is used")
         mesh, messages = _load_mesh_cached(path, name)
-        for message in messages:
-            warn(found, node, message)
+        for message, topic in messages:
+            warn(found, node, message, topic)
         if mesh is not None:
             faces = mesh.faces
             if node.get("ccw") is False:
@@ -79,20 +80,23 @@ def mesh_file(node: Any, warnings: list[Diagnostic] | None = None) -> MeshData |
     return result
 
 
-def _load_mesh_cached(path: str, name: str) -> tuple[MeshData | None, list[str]]:
+def _load_mesh_cached(path: str, name: str) -> tuple[MeshData | None, list[tuple[str, str | None]]]:
+    """The mesh of a file (None when it cannot be read) and its warnings, as (message, topic) pairs."""
     absolute = os.path.abspath(path)
     key = (absolute, os.stat(absolute).st_mtime_ns, name)
     if key not in _MESH_CACHE:
         messages: list[str] = []
+        failure = None
         try:
             mesh = _load_mesh(absolute, name, messages)
         except ImportError as exc:  # trimesh reads COLLADA with the optional pycollada package
-            mesh = None
-            messages.append(f"cannot read mesh file {path}: a Python package is missing ({exc})")
+            mesh, failure = None, f"cannot read mesh file {path}: a Python package is missing ({exc})"
         except Exception as exc:  # trimesh raises many kinds of errors on bad or unsupported files
-            mesh = None
-            messages.append(f"cannot read mesh file {path}: {type(exc).__name__}: {exc}")
-        _MESH_CACHE[key] = (mesh, messages)
+            mesh, failure = None, f"cannot read mesh file {path}: {type(exc).__name__}: {exc}"
+        notes: list[tuple[str, str | None]] = [(message, None) for message in messages]
+        if failure is not None:
+            notes.append((failure, UNREADABLE_FILE))
+        _MESH_CACHE[key] = (mesh, notes)
     return _MESH_CACHE[key]
 
 
