@@ -14,6 +14,7 @@ offset; noise and resolution apply to the grid metres, before projecting back (`
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 
@@ -83,10 +84,17 @@ def to_wgs84(enu: Sequence[float], reference: Sequence[float], resolution: float
         reference: `gpsReference`: latitude and longitude in degrees, altitude in metres.
         resolution: the GPS `resolution` in metres (-1: none), applied to the grid metres and the altitude.
     """
-    meridian = zone_meridian(float(reference[1]))
-    false_northing = 10000000.0 if reference[0] < 0.0 else 0.0
-    north0, east0 = to_grid(float(reference[0]), float(reference[1]), meridian, false_northing)
+    meridian, false_northing, north0, east0 = _reference_grid(float(reference[0]), float(reference[1]))
     north = quantize(north0 + float(enu[1]), resolution)
     east = quantize(east0 + float(enu[0]), resolution)
     latitude, longitude = from_grid(north, east, meridian, false_northing)
     return [latitude, longitude, quantize(float(reference[2]) + float(enu[2]), resolution)]
+
+
+@functools.lru_cache(maxsize=8)
+def _reference_grid(latitude: float, longitude: float) -> tuple[float, float, float, float]:
+    """The zone's meridian, false northing and grid (north, east) of a gpsReference: fixed for a world."""
+    meridian = zone_meridian(longitude)
+    false_northing = 10000000.0 if latitude < 0.0 else 0.0
+    north, east = to_grid(latitude, longitude, meridian, false_northing)
+    return meridian, false_northing, north, east

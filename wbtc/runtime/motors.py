@@ -82,7 +82,7 @@ class Motor:
         self.metered = False  # a battery counts this motor's effort: keep its mean force per step too
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
-        self._unit: np.ndarray | None = None  # a unit vector on the joint's dof (`_saturate`)
+        self._unit: tuple[np.ndarray, np.ndarray] | None = None  # `_saturate`'s unit vector on the dof, its M⁻¹ column
         # (MjData, MjModel, qpos, qvel, ctrl, dof_damping): views made once per MjData and MjModel.
         self._views: tuple[Any, ...] = (None, None)
 
@@ -161,13 +161,13 @@ class Motor:
         wheel on the floor keeps the servo.
         """
         d = self.dof_adr
-        unit = self._unit
-        if unit is None or len(unit) != model.nv:
-            unit = self._unit = np.zeros(model.nv)
-        unit[:] = 0.0
-        unit[d] = 1.0
-        solved = np.zeros(model.nv)
-        mujoco.mj_solveM(model, data, solved.reshape(1, -1), unit.reshape(1, -1))
+        if self._unit is None or self._unit[0].shape[1] != model.nv:
+            unit = np.zeros((1, model.nv))
+            unit[0, d] = 1.0
+            self._unit = (unit, np.zeros((1, model.nv)))
+        unit, solved = self._unit
+        mujoco.mj_solveM(model, data, solved, unit)
+        solved = solved[0]
         armature = float(model.dof_armature[d])
         mobility = float(solved[d]) / max(1.0 - armature * float(solved[d]), 1e-12)  # Sherman-Morrison
         if mobility <= 0.0:
