@@ -95,6 +95,10 @@ def test_a_world_run_again_comes_from_the_cache_with_its_nodes_shared(cache, wor
     # The table's device nodes are the cached scene's own nodes (supervisor calls compare them by identity).
     sensor = second.table.robots[0].devices[0]
     assert sensor.name == "ds" and any(node is sensor.node for node in walk(scene2.nodes))
+    # The table's Solids (keyed by id(node)) are the cached scene's nodes too (supervisor getPosition & co).
+    solids = {id(node): node for node in walk(scene2.nodes) if node.is_a("Solid")}
+    assert len(second.table.solids) == len(first.table.solids) > 0
+    assert set(second.table.solids) <= set(solids)
 
 
 def test_options_and_no_cache_give_their_own_results(cache, world, monkeypatch):

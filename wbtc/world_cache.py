@@ -48,7 +48,7 @@ from wbtc.resources import protos_dir
 from wbtc.scene.model import Scene
 
 #: Bumped when what the cache holds changes shape.
-_FORMAT = 1
+_FORMAT = 2
 
 Stamp = tuple[str, int, int]  # (path, size, modification time in ns); size -1 for a missing path
 

@@ -200,7 +200,9 @@ class BodyBuilder:
         body.name = ctx.unique("body", _body_name(node, robot))
         body.pos, body.quat = pose.pos, pose.quat
         body.info = info(node)
-        ctx.table.solids.setdefault(id(node), (body.name, frame.pos.copy(), frame.quat.copy(), after))
+        if id(node) not in ctx.table.solids:
+            ctx.table.solids[id(node)] = (body.name, frame.pos.copy(), frame.quat.copy(), after)
+            ctx.table.solid_nodes[id(node)] = node
         if node.def_name and node.def_name not in ctx.table.bodies:
             ctx.table.bodies[node.def_name] = body.name
         cross_section = float(node.get("radarCrossSection") or 0.0)

@@ -182,6 +182,9 @@ class DeviceTable:
     viewpoint: dict[str, Any] | None = None
     linear_damping: dict[str, float] = field(default_factory=dict)
     solids: dict[int, tuple[str, np.ndarray, np.ndarray, np.ndarray]] = field(default_factory=dict)
+    # The Solid node behind each `solids` key: a table read back from `wbtc.world_cache` has new nodes,
+    # with new ids, so pickling keys `solids` by the nodes themselves (see __getstate__/__setstate__).
+    solid_nodes: dict[int, Node] = field(default_factory=dict, repr=False, compare=False)
     recognizable: list[Recognizable] = field(default_factory=list)
     radar_targets: list[tuple[str, float]] = field(default_factory=list)  # (body, radarCrossSection) of Solids
     initial_velocities: dict[str, tuple[list[float], list[float]]] = field(default_factory=dict)
@@ -199,6 +202,20 @@ class DeviceTable:
     tracks: list[Any] = field(default_factory=list)
     paintable: dict[str, tuple[str, float, float, str]] = field(default_factory=dict)
     ink_evaporation: float = 0.0
+
+    def __getstate__(self) -> dict:
+        """`solids` by node, not by `id(node)`: the unpickled nodes (the scene's, when pickled with it) have new ids."""
+        state = dict(self.__dict__)
+        state["solids"] = [(self.solid_nodes[key], value) for key, value in self.solids.items()]
+        state["solid_nodes"] = None
+        return state
+
+    def __setstate__(self, state: dict) -> None:
+        """Key `solids` again by the ids of the nodes as they are now (see `__getstate__`)."""
+        pairs = state["solids"]
+        state["solids"] = {id(node): value for node, value in pairs}
+        state["solid_nodes"] = {id(node): node for node, _ in pairs}
+        self.__dict__.update(state)
 
     def robot(self, name: str) -> RobotEntry | None:
         """The robot with this name, or None."""
