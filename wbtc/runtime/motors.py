@@ -137,7 +137,7 @@ class Motor:
         _, _, qpos, qvel, ctrl, damping = views
         wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
         velocity = float(qvel[self.dof_adr])
-        self._limit_gain(velocity, wanted)
+        self._limit_gain(model, data, velocity, wanted)
         if self.gain < self.kv and self._saturate(model, data, wanted, velocity, ts):
             return
         if self._written[0] is not model or self._written[1] != self.gain:
@@ -161,15 +161,7 @@ class Motor:
         wheel on the floor keeps the servo.
         """
         d = self.dof_adr
-        if self._unit is None or self._unit[0].shape[1] != model.nv:
-            unit = np.zeros((1, model.nv))
-            unit[0, d] = 1.0
-            self._unit = (unit, np.zeros((1, model.nv)))
-        unit, solved = self._unit
-        mujoco.mj_solveM(model, data, solved, unit)
-        solved = solved[0]
-        armature = float(model.dof_armature[d])
-        mobility = float(solved[d]) / max(1.0 - armature * float(solved[d]), 1e-12)  # Sherman-Morrison
+        mobility = self._mobility(model, data)
         if mobility <= 0.0:
             return False
         # The joint's damping counts at the velocity the step ends with (MuJoCo integrates it implicitly).
@@ -225,17 +217,79 @@ class Motor:
         self.command = wanted
         return wanted
 
-    def _limit_gain(self, velocity: float, wanted: float) -> None:
-        """Keep the servo's effort within the available torque by lowering its gain.
+    def _limit_gain(self, model: mujoco.MjModel, data: mujoco.MjData, velocity: float, wanted: float) -> None:
+        """Keep the servo's effort within the available torque by lowering its gain only as far as needed.
 
-        The servo's force is gain × (target − velocity) and only shrinks as the joint catches up, so
-        capping the gain at available / |target − velocity| at the start of each basic step keeps
-        the effort within the limit without clamping (which would break the implicit damping that
-        the joint's armature, gain × timestep, stands for: see compile.device.tune_servos). `velocity`: the
-        joint's velocity now.
+        The servo's force is gain × (target − velocity) and only shrinks as the joint catches up; what
+        the joint feels over a substep h is gain × (target − the velocity the substep ends with),
+        because the servo's damping is implicit (the armature gain × h, see
+        compile.device.tune_servos). For a joint of inertia I, damping c and bias forces b that is
+        gain·N / (I + h·(gain + c)) with N = I·e + h·(c·target + b): a servo far from its velocity
+        gives much less than gain × e. The gain is the largest that keeps this within the available
+        torque A, for the joint's inertia with every other joint free and with every other joint
+        held (the torque is monotonic in I, so it then holds in between). A constraint on the joint
+        can add any inertia (a wheel's contact pushing its robot, the joint's own stop); then the
+        bound is the explicit force, gain × e ≤ A. Capping the gain at the start of each basic step
+        keeps the effort within the limit without clamping, which would break the implicit damping.
+        Webots' ODE motor, a velocity constraint with a force limit, reaches its velocity within the
+        step whenever the available torque allows; so does the servo of a free joint now (coupled
+        motors keep their ratios; a capped gain lagged them by v² / 2a).
         """
-        error = abs(wanted - velocity)
-        self.gain = self.kv if error * self.kv <= self.available else max(self.available / error, 1e-12)
+        error = wanted - velocity
+        if abs(error) * self.kv <= self.available:
+            self.gain = self.kv
+            return
+        if self._constrained(model, data):
+            self.gain = max(self.available / abs(error), 1e-12)
+            return
+        d, h, available = self.dof_adr, float(model.opt.timestep), self.available
+        damping = float(model.dof_damping[d])
+        # Bias forces (gravity, Coriolis) less the passive ones other than the damping (springs).
+        bias = float(data.qfrc_bias[d]) - float(data.qfrc_passive[d]) - damping * velocity
+        gain = self.kv
+        # The torque is monotonic in the inertia, so its bound holds between the joint's inertia with
+        # every other joint free (1 / mobility) and with every other joint held (M's diagonal).
+        mobility = self._mobility(model, data)
+        for inertia in (1.0 / mobility if mobility > 0.0 else math.inf, self._held_inertia(model, data)):
+            if math.isinf(inertia):
+                gain = min(gain, available / abs(error))
+                continue
+            # The servo gives gain·(target − v_new) over a substep h, v_new from the implicit step
+            # (I + h·(gain + c))·v_new = I·v + h·(gain·target − bias): gain·N / (I + h·(gain + c)) with
+            # N = I·e + h·(c·target + bias), at most A when gain·(|N| − h·A) ≤ A·(I + h·c).
+            excess = abs(inertia * error + h * (damping * wanted + bias)) - h * available
+            if excess > 0.0:
+                gain = min(gain, available * (inertia + h * damping) / excess)
+        self.gain = max(gain, 1e-12)
+
+    def _mobility(self, model: mujoco.MjModel, data: mujoco.MjData) -> float:
+        """(M⁻¹)_dd without the servo's armature: the inverse of the joint's inertia with every other joint free."""
+        d = self.dof_adr
+        if self._unit is None or self._unit[0].shape[1] != model.nv:
+            unit = np.zeros((1, model.nv))
+            unit[0, d] = 1.0
+            self._unit = (unit, np.zeros((1, model.nv)))
+        unit, solved = self._unit
+        mujoco.mj_solveM(model, data, solved, unit)
+        value = float(solved[0, d])
+        return value / max(1.0 - float(model.dof_armature[d]) * value, 1e-12)  # Sherman-Morrison
+
+    def _held_inertia(self, model: mujoco.MjModel, data: mujoco.MjData) -> float:
+        """The joint's inertia with every other joint held: its mass-matrix diagonal less the servo's armature."""
+        d = self.dof_adr
+        diagonal = int(model.M_rowadr[d]) + int(model.M_rownnz[d]) - 1  # data.M: CSR rows, the diagonal last
+        return max(float(data.M[diagonal]) - float(model.dof_armature[d]), 0.0)
+
+    def _constrained(self, model: mujoco.MjModel, data: mujoco.MjData) -> bool:
+        """Whether a constraint acts on the joint now: a contact of a body it moves, its stops, a weld."""
+        count = data.nefc
+        if not count:
+            return False
+        if model.opt.jacobian == mujoco.mjtJacobian.mjJAC_SPARSE or (
+                model.opt.jacobian == mujoco.mjtJacobian.mjJAC_AUTO and model.nv >= 60):
+            used = int(data.efc_J_rowadr[count - 1] + data.efc_J_rownnz[count - 1])
+            return bool((data.efc_J_colind[:used] == self.dof_adr).any())
+        return bool(data.efc_J[: count * model.nv].reshape(count, model.nv)[:, self.dof_adr].any())
 
     def feedback(self, data: mujoco.MjData) -> float:
         """The torque/force the motor's joint gave over the last step (its mean over the substeps)."""
