@@ -4,8 +4,12 @@ Webots (WbRobot::postPhysicsStep): a Robot whose `battery` field holds [energy (
 recharge speed (W)] loses, after every physics step, (cpuConsumption + Σ devices' consumption) ×
 the step's duration, never below 0; a motor consumes `consumptionFactor` × the torque (force) it
 applied. When the energy reaches 0, Webots says "Battery is empty." and switches the robot's devices
-off: its motors give no torque any more. The battery sensor (`batterySensorEnable`) reads the
-energy left at each sampling period, -1 when the `battery` field is empty.
+off (WbRobot::powerOn): its motors give no torque any more, and its sensors stop refreshing
+(`isPowerOn()` guards every sensor's refresh), so the controller keeps reading the values of the
+last step the battery paid for in full. The step is drained before the sensors are read, so the
+step that empties the battery is never seen (Simulation.step). The battery sensor
+(`batterySensorEnable`) reads the energy left at each sampling period (0 once empty), -1 when the
+`battery` field is empty.
 
 Not honoured yet: recharging at a Charger (wbtc has no Charger node), devices other than motors
 consuming energy (Webots' LEDs and others have no consumption of their own either).

@@ -297,22 +297,29 @@ class Simulation:
             for display in robot.displays.values():
                 display.show(self, robot)
         for robot in self.robots:
-            for sensor in robot.sensors.values():
-                if sensor.period > 0:
-                    sensor.tick(self, self.time_ms)
-            for motor in robot.motors.values():
-                if motor.feedback_period > 0:
-                    motor.sample_feedback(self.data, self.time_ms)
+            # Webots drains the battery in the step's postPhysicsStep, before the sensors are read; a robot
+            # whose battery is empty is powered off and its sensors keep their last values (see battery).
             if robot.battery is not None:
                 robot.battery.step(self.data, robot.motors, self.step_ms / 1000.0, robot.entry.name)
                 robot.battery.sample(self.time_ms)
-            if self.time_ms + 1e-9 >= robot.keyboard_due:
-                robot.keys = list(self.keys_down)
-                robot.keyboard_due += robot.keyboard_period
+            if robot.battery is None or robot.battery.powered:
+                self._sample(robot)
             pos = self.data.xpos[robot.body].tolist()  # plain floats: math.dist beats numpy on 3 numbers
             robot.distance += math.dist(pos, robot.last_pos)
             robot.last_pos = pos
         self.keys_down = []
+
+    def _sample(self, robot: RobotState) -> None:
+        """Sample a powered robot's sensors, motor feedback and keyboard that are due after this step."""
+        for sensor in robot.sensors.values():
+            if sensor.period > 0:
+                sensor.tick(self, self.time_ms)
+        for motor in robot.motors.values():
+            if motor.feedback_period > 0:
+                motor.sample_feedback(self.data, self.time_ms)
+        if self.time_ms + 1e-9 >= robot.keyboard_due:
+            robot.keys = list(self.keys_down)
+            robot.keyboard_due += robot.keyboard_period
 
     def laser_spots(self) -> list[tuple[np.ndarray, np.ndarray, float]]:
         """The red spots of the laser DistanceSensors that hit something at their last sample."""
