@@ -31,7 +31,8 @@ def run(world: str | Path, *, duration: float | None = None, seed: int | None = 
         controllers: Mapping[str, str | Path] | None = None, args: Mapping[str, Sequence[Any]] | None = None,
         fields: Mapping[str, Any] | None = None, noise: bool = True, timeout: float | None = None,
         record: str | Path | None = None, trace: bool = True, echo: bool = False,
-        keys: str | Path | None = None, realtime: bool = False, physics_step: float = 2.0) -> RunResult:
+        keys: str | Path | None = None, realtime: bool = False, physics_step: float = 2.0,
+        ode_contacts: bool = False) -> RunResult:
     """Run a world headless and return what happened.
 
     Args:
@@ -50,6 +51,7 @@ def run(world: str | Path, *, duration: float | None = None, seed: int | None = 
         keys: a key script (`time_s key` lines) replayed into the robots' Keyboards.
         realtime: run no faster than real time.
         physics_step: the longest MuJoCo substep, ms.
+        ode_contacts: contacts as Webots' ODE ones (see `wbtc.compile.soft_contact`).
 
     Returns:
         The run's `RunResult`.
@@ -59,7 +61,8 @@ def run(world: str | Path, *, duration: float | None = None, seed: int | None = 
     """
     world = Path(world)
     capture = _Capture(echo)
-    prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise, fields=fields)
+    prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise, fields=fields,
+                       ode_contacts=ode_contacts)
     sim, hub = prepared.sim, prepared.hub
     try:
         sim.substitutions = _substitutions(sim, world, controllers or {}, args or {}, capture)

@@ -88,6 +88,9 @@ def check(
     typer.echo(format_report(report))
 
 
+_ODE_CONTACTS_HELP = "Contacts as Webots' ODE ones (softERP, softCFM: heavy bodies sink), hard Coulomb friction."
+
+
 @app.command("compile")
 def compile_command(
     world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
@@ -95,6 +98,7 @@ def compile_command(
     strict: Annotated[bool, typer.Option("--strict", help="Unhonoured fields and unresolved PROTOs are errors.")]
     = False,
     substep: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+    ode_contacts: Annotated[bool, typer.Option("--ode-contacts", help=_ODE_CONTACTS_HELP)] = False,
 ) -> None:
     """Compile a world to a MuJoCo model (MJCF), with its textures beside it."""
     import_mujoco_without_gl()  # compiling draws nothing
@@ -103,7 +107,8 @@ def compile_command(
     from wbtc.pipeline import compile_world
 
     out = output or world.with_suffix(".xml")
-    result, expansion = _guard(lambda: compile_world(world, CompileOptions(max_substep_ms=substep, strict=strict)))
+    result, expansion = _guard(lambda: compile_world(world, CompileOptions(max_substep_ms=substep, strict=strict,
+                                                                        ode_contacts=ode_contacts)))
     _print_diagnostics(expansion.warnings + result.warnings)
     _guard(lambda: write_mjcf(result.spec, out))
     typer.echo(f"{out}: {result.summary()}")
@@ -121,6 +126,7 @@ def run(
     keys: Annotated[Path | None, typer.Option("--keys", help="Replay timed key presses (`time_s key` lines).")]
     = None,
     physics_step: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+    ode_contacts: Annotated[bool, typer.Option("--ode-contacts", help=_ODE_CONTACTS_HELP)] = False,
     no_noise: Annotated[bool, typer.Option("--no-noise", help="Turn sensor noise off.")] = False,
     record: Annotated[Path | None, typer.Option(
         "--record", help="Write a video of the Viewpoint (.mp4 or .gif), or a page replaying the run (.html).")]
@@ -132,7 +138,7 @@ def run(
 
     code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,
                                  json_output=json_output, trace=trace, keys=keys, physics_step=physics_step,
-                                 noise=not no_noise, warn=_print_diagnostics, record=record))
+                                 ode_contacts=ode_contacts, noise=not no_noise, warn=_print_diagnostics, record=record))
     raise typer.Exit(code)
 
 

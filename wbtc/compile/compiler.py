@@ -13,7 +13,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wbtc.compile import bodyless, damping, device, still_joints, world
+from wbtc.compile import bodyless, damping, device, soft_contact, still_joints, world
 from wbtc.compile.context import CompileContext, CompileOptions
 from wbtc.compile.result import CompileResult
 from wbtc.compile.solid import BodyBuilder
@@ -60,7 +60,11 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     _planes_in_moving_bodies(spec)
     still_joints.hold_still_joints(spec)
     bodyless.separate_bodyless(spec)
+    if options.ode_contacts:
+        soft_contact.pair_static_priority(ctx)
     model = _compile(spec)
+    if options.ode_contacts:
+        soft_contact.apply(spec, model, ctx)
     device.tune_servos(spec, model)
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)
     return CompileResult(model, ctx.table, ctx.warnings, ctx.texture_paths, scene, options, spec)

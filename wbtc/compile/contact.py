@@ -44,7 +44,9 @@ MuJoCo mapping, and why:
   order ends box1 6 cm from Webots' pose after 40 steps, ODE's other order (the Plane as o1, so
   box1 is S1) 9 cm, and a wrong S1 without the matching normal 0.8 m or more.
 
-Not honoured yet: `forceDependentSlip`, `bounce`, `bounceVelocity`, `softERP`, `softCFM`; rho2 in
+softERP and softCFM: see wbtc.compile.soft_contact.
+
+Not honoured yet: `forceDependentSlip`, `bounce`, `bounceVelocity`; rho2 in
 pairs with the "default" material; asymmetric friction on geometries of worlds older than R2022a
 (Webots' older axis rules); ODE's box-shaped friction bounds (MuJoCo's cone is elliptic).
 """
@@ -76,12 +78,14 @@ class ContactLaw:
         mu: the coulombFriction values (1 to 4), -1 made INFINITE.
         rho: rollingFriction (rho, rho2, rhoN), -1 made INFINITE.
         rotation: frictionRotation (S1's angle, S2's angle), radians.
+        softness: (softERP, softCFM), see wbtc.compile.soft_contact.
     """
 
     materials: tuple[str, str]
     mu: tuple[float, ...]
     rho: tuple[float, float, float]
     rotation: tuple[float, float]
+    softness: tuple[float, float] = (0.2, 0.001)
 
     @property
     def asymmetric(self) -> bool:
@@ -105,8 +109,9 @@ def read_law(props: Node) -> ContactLaw:
     mu = tuple(_finite(float(v)) for v in (values if values is not None and len(values) else [1.0]))[:4]
     rho = tuple(_finite(float(v)) for v in (props.get("rollingFriction") or (0.0, 0.0, 0.0)))
     rotation = tuple(float(v) for v in (props.get("frictionRotation") or (0.0, 0.0)))
+    softness = (float(props.get("softERP")), float(props.get("softCFM")))
     return ContactLaw((str(props.get("material1")), str(props.get("material2"))), mu,
-                      (rho[0], rho[1], rho[2]), (rotation[0], rotation[1]))
+                      (rho[0], rho[1], rho[2]), (rotation[0], rotation[1]), softness)
 
 
 def _finite(value: float) -> float:
@@ -152,7 +157,7 @@ def apply_contact_laws(laws: list[ContactLaw], ctx: CompileContext, solref: list
     names: dict[str, str] = {}
     for material in {m for law in asymmetric for m in law.materials}:
         for index, geom in geoms_of.get(material, []):
-            names[_name(geom, index)] = material
+            names[geom_name(geom, index)] = material
     ctx.table.asymmetric_friction = (asymmetric, names)
 
 
@@ -170,25 +175,26 @@ def _rolling(law: ContactLaw, geoms_of: dict[str, list[tuple[int, mujoco.MjsGeom
         return
     for index1, geom1 in geoms_of.get(first, []):
         for index2, geom2 in geoms_of.get(second, []):
-            if geom1 is geom2 or not _may_touch(geom1, geom2, excluded):
+            if geom1 is geom2 or not may_touch(geom1, geom2, excluded):
                 continue
             pair = ctx.spec.add_pair()
-            pair.geomname1, pair.geomname2 = _name(geom1, index1), _name(geom2, index2)
+            pair.geomname1, pair.geomname2 = geom_name(geom1, index1), geom_name(geom2, index2)
             pair.condim = condim
             pair.friction = friction
             pair.solref = solref
 
 
-def _may_touch(geom1: mujoco.MjsGeom, geom2: mujoco.MjsGeom, excluded: set[frozenset[str]]) -> bool:
+def may_touch(geom1: mujoco.MjsGeom, geom2: mujoco.MjsGeom, excluded: set[frozenset[str]]) -> bool:
     """Whether MuJoCo's own collision would consider the two geoms (an explicit pair skips its filters)."""
     if geom1.parent == geom2.parent or frozenset((geom1.parent.name, geom2.parent.name)) in excluded:
         return False
     if not (geom1.contype & geom2.conaffinity or geom2.contype & geom1.conaffinity):
         return False
-    return _moves(geom1.parent) or _moves(geom2.parent)
+    return moves(geom1.parent) or moves(geom2.parent)
 
 
-def _moves(body: mujoco.MjsBody) -> bool:
+def moves(body: mujoco.MjsBody) -> bool:
+    """Whether a body can move: it or a body above it has a joint."""
     while body is not None and body.name != "world":
         if len(body.joints):
             return True
@@ -196,7 +202,7 @@ def _moves(body: mujoco.MjsBody) -> bool:
     return False
 
 
-def _name(geom: mujoco.MjsGeom, index: int) -> str:
+def geom_name(geom: mujoco.MjsGeom, index: int) -> str:
     """The geom's name, giving it one if it has none (pairs and the runtime refer to geoms by name)."""
     if not geom.name:
         geom.name = f"contact#{index}"

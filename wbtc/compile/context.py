@@ -33,10 +33,13 @@ class CompileOptions:
     Attributes:
         max_substep_ms: the longest MuJoCo timestep allowed; the substep divides basicTimeStep.
         strict: unhonoured fields are errors instead of warnings.
+        ode_contacts: contacts as ODE's soft rows (softERP, softCFM) with hard Coulomb friction
+            (wbtc.compile.soft_contact), instead of MuJoCo's stiff default contact.
     """
 
     max_substep_ms: float = 2.0
     strict: bool = False
+    ode_contacts: bool = False
 
 
 @dataclass
@@ -58,6 +61,8 @@ class CompileContext:
     #: shape without Material (lit by the Background); `world.set_ambient` turns it into emission.
     ambient_roles: dict[str, float | None] = field(default_factory=dict)
     camera_terms: dict[str, tuple[float, float, float]] = field(default_factory=dict)  # appearance._camera_terms
+    #: ContactProperties' (softERP, softCFM) by their two materials (see soft_contact).
+    contact_softness: dict[frozenset[str], tuple[float, float]] = field(default_factory=dict)
     paint: bool | None = None  # the world has a Pen: textured shapes are compiled paintable (see `paintable`)
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)

@@ -17,10 +17,14 @@
   A world with neither lights nor a Background keeps MuJoCo's headlight so that it is not black.
 - NUE worlds (x north, y up, z east) are turned into ENU once, at the root: every top-level node
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
+- Contact softness: by default MuJoCo's contact, stiffer than ODE's (time constant 10 ms). With
+  `CompileOptions.ode_contacts`, ContactProperties `softERP` and `softCFM` are recorded here and
+  applied once the model is compiled (wbtc.compile.soft_contact).
 
 Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
 single-threaded), `physicsDisable*`, `lineScale`; ContactProperties `bounce`,
-`bounceVelocity`, `forceDependentSlip`, `softERP`, `softCFM`; Fog; Background textures (a plain sky colour is used).
+`bounceVelocity`, `forceDependentSlip` (and `softERP`, `softCFM` without `ode_contacts`); Fog;
+Background textures (a plain sky colour is used).
 """
 
 from __future__ import annotations
@@ -39,7 +43,8 @@ from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
 _UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics"})
-_UNHONOURED_CONTACT = frozenset({"bounce", "bounceVelocity", "forceDependentSlip", "softERP", "softCFM"})
+_UNHONOURED_CONTACT = frozenset({"bounce", "bounceVelocity", "forceDependentSlip"})
+_UNHONOURED_STIFF = _UNHONOURED_CONTACT | {"softERP", "softCFM"}
 #: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
 INFINITE_FRICTION = 100.0
 
@@ -168,8 +173,10 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
     for props in (info_node.get("contactProperties") if info_node is not None else None) or []:
         if not isinstance(props, Node):
             continue
-        ctx.unhonoured(props, _UNHONOURED_CONTACT)
-        laws.append(contact.read_law(props))
+        ctx.unhonoured(props, _UNHONOURED_CONTACT if ctx.options.ode_contacts else _UNHONOURED_STIFF)
+        law = contact.read_law(props)
+        laws.append(law)
+        ctx.contact_softness.setdefault(frozenset(law.materials), law.softness)
         mu = _mu(props)
         pair = {str(props.get("material1")), str(props.get("material2"))}
         if pair == {"default"}:
@@ -182,7 +189,8 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
             ctx.warn("friction between two non-default contact materials is approximated per material",
                      props.span)
     # Contacts stiffer than MuJoCo's default (time constant 0.02 s), so robots sink about as little
-    # as in ODE; much stiffer (two substeps) and light robots such as the e-puck start to hop.
+    # as in ODE; much stiffer (two substeps) and light robots such as the e-puck start to hop. With
+    # ode_contacts, soft_contact.apply replaces them with ODE's, body by body, once the model is compiled.
     solref = [max(5 * ctx.spec.option.timestep, 0.01), 1.0]
     for geom, solid in ctx.contact_geoms:
         geom.solref = solref

@@ -46,13 +46,13 @@ class Prepared:
 
 
 def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, noise: bool = True,
-            fields: Mapping[str, Any] | None = None) -> Prepared:
+            fields: Mapping[str, Any] | None = None, ode_contacts: bool = False) -> Prepared:
     """Load, edit (`fields`, see `overrides`) and compile a world into a simulation ready to run.
 
     Raises:
         WbtcError: the world does not load or compile, or an override names nothing.
     """
-    compile_options = CompileOptions(max_substep_ms=physics_step)
+    compile_options = CompileOptions(max_substep_ms=physics_step, ode_contacts=ode_contacts)
     if fields:
         # Imported here, as the supervisor below: a world from the cache needs neither the parser,
         # the PROTO expander nor the compiler, which are a good part of wbtc's own import time.
@@ -80,10 +80,10 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
 
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
            json_output: bool, trace: Path | None, keys: Path | None, physics_step: float, noise: bool,
-           warn: Callable[[list[Diagnostic]], None], record: Path | None = None) -> int:
+           warn: Callable[[list[Diagnostic]], None], record: Path | None = None, ode_contacts: bool = False) -> int:
     """Run a world as `wbtc run` does (`record`: the video or page to write); returns the process exit code."""
     key_script = read_keys(keys) if keys else []
-    prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise)
+    prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise, ode_contacts=ode_contacts)
     sim, hub = prepared.sim, prepared.hub
     warn(prepared.warnings)
     if prepared.unhonoured:
