@@ -82,7 +82,7 @@ class Motor:
         self.metered = False  # a battery counts this motor's effort: keep its mean force per step too
         # The servo gain last written into a model (and that model): rewritten only when it changes.
         self._written: tuple[mujoco.MjModel | None, float] = (None, math.nan)
-        self._unit: tuple[np.ndarray, np.ndarray] | None = None  # `_saturate`'s unit vector on the dof, its M⁻¹ column
+        self._unit: tuple[np.ndarray, np.ndarray] | None = None  # `_mobility`'s unit vector on the dof, its M⁻¹ column
         # (MjData, MjModel, qpos, qvel, ctrl, dof_damping): views made once per MjData and MjModel.
         self._views: tuple[Any, ...] = (None, None)
 
@@ -137,8 +137,8 @@ class Motor:
         _, _, qpos, qvel, ctrl, damping = views
         wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
         velocity = float(qvel[self.dof_adr])
-        self._limit_gain(model, data, velocity, wanted)
-        if self.gain < self.kv and self._saturate(model, data, wanted, velocity, ts):
+        mobility = self._limit_gain(model, data, velocity, wanted)
+        if self.gain < self.kv and self._saturate(model, data, wanted, velocity, ts, mobility):
             return
         if self._written[0] is not model or self._written[1] != self.gain:
             model.actuator_gainprm[a, 0] = self.gain
@@ -149,7 +149,7 @@ class Motor:
         ctrl[a] = wanted + self._damping_lead(float(damping[self.dof_adr]), velocity, wanted)
 
     def _saturate(self, model: mujoco.MjModel, data: mujoco.MjData, wanted: float, velocity: float,
-                  ts: float) -> bool:
+                  ts: float, mobility: float | None = None) -> bool:
         """Push with the whole available torque for this step when the joint cannot reach `wanted` in it.
 
         ODE solves a motor as a velocity constraint with a force limit: when reaching the velocity within
@@ -161,7 +161,8 @@ class Motor:
         wheel on the floor keeps the servo.
         """
         d = self.dof_adr
-        mobility = self._mobility(model, data)
+        if mobility is None:  # not found by _limit_gain this step
+            mobility = self._mobility(model, data)
         if mobility <= 0.0:
             return False
         # The joint's damping counts at the velocity the step ends with (MuJoCo integrates it implicitly).
@@ -217,7 +218,8 @@ class Motor:
         self.command = wanted
         return wanted
 
-    def _limit_gain(self, model: mujoco.MjModel, data: mujoco.MjData, velocity: float, wanted: float) -> None:
+    def _limit_gain(self, model: mujoco.MjModel, data: mujoco.MjData, velocity: float,
+                    wanted: float) -> float | None:
         """Keep the servo's effort within the available torque by lowering its gain only as far as needed.
 
         The servo's force is gain × (target − velocity) and only shrinks as the joint catches up; what
@@ -234,14 +236,17 @@ class Motor:
         Webots' ODE motor, a velocity constraint with a force limit, reaches its velocity within the
         step whenever the available torque allows; so does the servo of a free joint now (coupled
         motors keep their ratios; a capped gain lagged them by v² / 2a).
+
+        Returns:
+            The joint's mobility (see `_mobility`) when it was needed here, for `_saturate`; else None.
         """
         error = wanted - velocity
         if abs(error) * self.kv <= self.available:
             self.gain = self.kv
-            return
+            return None
         if self._constrained(model, data):
             self.gain = max(self.available / abs(error), 1e-12)
-            return
+            return None
         d, h, available = self.dof_adr, float(model.opt.timestep), self.available
         damping = float(model.dof_damping[d])
         # Bias forces (gravity, Coriolis) less the passive ones other than the damping (springs).
@@ -261,6 +266,7 @@ class Motor:
             if excess > 0.0:
                 gain = min(gain, available * (inertia + h * damping) / excess)
         self.gain = max(gain, 1e-12)
+        return mobility
 
     def _mobility(self, model: mujoco.MjModel, data: mujoco.MjData) -> float:
         """(M⁻¹)_dd without the servo's armature: the inverse of the joint's inertia with every other joint free."""
