@@ -156,13 +156,14 @@ def test_an_untextured_shape_gets_ink_on_a_layer_of_webots_default_size(pen_worl
     assert sim.model.mat_rgba[geom.matid[0]].tolist() == [1.0, 1.0, 1.0, 1.0]
     apply_commands(sim, robot, [(tags["untextured"], "write", True)])
     sim.step()
-    # leadSize 0.1 x 32 / 0.0866 = 36 texels across: a disc of radius 18 about the top face's centre (16, 16),
-    # clipped by the layer's edge (not by the face's slot, as Webots' layer is one image); ink density 0.5 of
+    # leadSize 0.1 x 32 / 0.0866 = 36 texels across: a disc of radius 18 about the top face's centre, which
+    # Webots' layer has at (u, v) = (0.625, 0.25): row 16, column 80 of the 128 x 64 layer. Clipped by the
+    # layer's first row only (not by the face's slot, as Webots' layer is one image); ink density 0.5 of
     # red over white, blended in linear light: (255, 188, 188).
     inked = np.any(layer != 255, axis=2)
     rows, cols = np.nonzero(inked)
-    assert (rows.min(), rows.max(), cols.min(), cols.max()) == (0, 34, 0, 34)
-    assert int(inked.sum()) == 985
+    assert (rows.min(), rows.max(), cols.min(), cols.max()) == (0, 34, 62, 98)
+    assert int(inked.sum()) == 997
     assert {tuple(v) for v in layer[inked].tolist()} == {(255, 188, 188)}
 
 
@@ -181,9 +182,9 @@ def test_ink_on_a_box_face_stays_on_that_face(pen_world):
     blue = np.all(layer == (0, 0, 255), axis=2)
     rows, cols = np.nonzero(blue)
     assert len(rows) > 0
-    # All of it within one face's slot of the layer (64 x 64 texels): the top face, the fifth slot.
-    assert len({(r // 64, c // 64) for r, c in zip(rows, cols, strict=True)}) == 1
-    assert {(r // 64, c // 64) for r, c in zip(rows, cols, strict=True)} == {(0, 0)}
+    # All of it within one face's slot of the layer (64 x 64 texels): the top face's, Webots' third slot of
+    # the first row (u 0.5 to 0.75, v 0 to 0.5).
+    assert {(r // 64, c // 64) for r, c in zip(rows, cols, strict=True)} == {(0, 2)}
 
 
 def test_a_camera_sees_the_ink(pen_world):

@@ -15,7 +15,8 @@ What each shape shows in its slots, in R2022a axes (the caller turns pre-R2022a 
 Cones and Planes, whose axis was y, as it does for MuJoCo primitives), (s, t) with t upwards:
 
 - Box: each face the whole image, upright on the four sides (t along +z), the top seen from above
-  and the bottom seen from below (s along +x on both, t along +y on the top, -y on the bottom).
+  and the bottom seen from below (s along +x on both, t along +y on the top, -y on the bottom), each
+  in Webots' slot of the layer (`BOX_SLOTS`).
 - Plane: the image over the plane, s along +x, t along +y.
 - Sphere: longitude and latitude: s goes once round the z axis from the back (-x) counter-clockwise
   seen from above, t from the south pole (0) to the north pole (1).
@@ -40,6 +41,7 @@ the layer by `paintable`.)
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -52,6 +54,16 @@ from wbtc.scene.model import Node
 SEGMENTS = 48
 #: Rings from pole to pole of a sphere (and over each half of a capsule's caps).
 RINGS = 24
+#: Where each face of `box` (front +x, back -x, left +y, right -y, top +z, bottom -z) lies in a Box's
+#: layer, as (s0, t0, s1, t1) with t upwards: Webots' slots (WbBox::computeTextureCoordinate for the
+#: non-repeating coordinates, the second texture coordinates of wren's unit box). Counted from the layer's
+#: first row (v = 1 - t), the side faces fill its lower half, left, back, right and front from u = 0, so that
+#: they follow each other round the box; the bottom and the top share the upper half at u 0 to 0.25 and
+#: 0.5 to 0.75 (the top's y = -h edge on the right face's top edge), the rest is unused. Webots' stroke is
+#: not cut at a slot's edge: ink that spills out of a face's slot lands on whichever face holds the texels
+#: beside it, so the layout decides where a stroke over an edge shows (the top face above the right one).
+BOX_SLOTS = ((0.75, 0.0, 1.0, 0.5), (0.25, 0.0, 0.5, 0.5), (0.0, 0.0, 0.25, 0.5), (0.5, 0.0, 0.75, 0.5),
+             (0.5, 0.5, 0.75, 1.0), (0.0, 0.5, 0.25, 1.0))
 #: The geometry nodes this module makes meshes of.
 MESHED_PRIMITIVES = frozenset({"Box", "Plane", "Sphere", "Cylinder", "Capsule", "Cone", "ElevationGrid"})
 
@@ -84,7 +96,7 @@ def primitive_mesh(node: Node, legacy: bool = False) -> Painted | None:
     """
     kind = node.base_type
     if kind == "Box":
-        return _slotted(box(np.abs(np.asarray(node.get("size"), dtype=float))), (4, 2))
+        return _slotted(box(np.abs(np.asarray(node.get("size"), dtype=float))), (4, 2), BOX_SLOTS)
     if kind == "Plane":
         return Painted(plane(np.asarray(node.get("size"), dtype=float)))
     if kind == "Sphere":
@@ -117,7 +129,7 @@ def _sides(node: Node) -> int:
 
 
 def _slotted(parts: list[MeshData], grid: tuple[int, int],
-             regions: list[tuple[float, float, float, float]] | None = None) -> Painted:
+             regions: Sequence[tuple[float, float, float, float]] | None = None) -> Painted:
     """One mesh of `parts`, each part's texture coordinates squeezed into its region of the layer.
 
     Without `regions`, part i takes the i-th cell of the grid, row by row from the bottom.
