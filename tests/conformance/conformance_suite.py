@@ -128,7 +128,9 @@ def run_test(test: str) -> Outcome:
         env["WBTC_ASSET_CACHE"] = str(Path(tmp) / "assets")
         env["PYTHONPATH"] = os.pathsep.join([str(LIB), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
         with log.open("w", encoding="utf-8") as out:
-            process = subprocess.Popen([*_wbtc_command(), "run", str(world_of(test)), "--headless"], env=env,
+            # WBTC_CONFORMANCE_OPTIONS: more `wbtc run` options (e.g. --ode-contacts), to measure them.
+            extra = os.environ.get("WBTC_CONFORMANCE_OPTIONS", "").split()
+            process = subprocess.Popen([*_wbtc_command(), "run", str(world_of(test)), "--headless", *extra], env=env,
                                        stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                        start_new_session=True)
             code = _wait(process, results, start)

@@ -162,7 +162,7 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
     for index, (params, params_type, device_field, local_axis) in enumerate(axes, start=1):
         axis = frame.rotate(local_axis)
         joint = _make(child, node, ctx, joint_type, child_pose, anchor, axis, params, params_type)
-        if joint_type == mujoco.mjtJoint.mjJNT_HINGE:
+        if joint_type == mujoco.mjtJoint.mjJNT_HINGE and not ctx.options.ode_contacts:
             _round_wheels(child, np.asarray(joint.axis, dtype=float))
         position = float(param(params, params_type, "position"))
         for dev in node.get(device_field) or []:
@@ -211,7 +211,9 @@ def _round_wheels(body: mujoco.MjsBody, axis: np.ndarray) -> None:
     friction: when a differential drive turns, the outer rims grip and the inner ones slip, so Webots'
     robots turn as if their wheels touched at their outer rims (Webots' hinge_2_joint_damping robot
     spins at r·ω / 0.0575 = 0.696 rad/s where the middle planes give r·ω / 0.055 = 0.727; see that
-    test's entry in tests/conformance/expected-failures.toml). That is not reproduced yet.
+    test's entry in tests/conformance/expected-failures.toml). With `CompileOptions.ode_contacts`
+    (hard Coulomb friction, wbtc.compile.soft_contact) the wheels stay cylinders and touch at both
+    rims, as in ODE: that robot then spins at 0.696 rad/s, Webots' figure.
     """
     for geom in body.geoms:
         if geom.group != COLLISION_GROUP or geom.type != mujoco.mjtGeom.mjGEOM_CYLINDER:

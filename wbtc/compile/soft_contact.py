@@ -1,10 +1,10 @@
 """ODE's soft contact (ContactProperties `softERP`, `softCFM`) as MuJoCo solver parameters; hard friction.
 
-Opt-in for now (`CompileOptions.ode_contacts`, `wbtc run --ode-contacts`): it is Webots' behaviour,
-but wbtc's wheels still touch the floor where MuJoCo's colliders put them, not on ODE's cylinder
-rims, and with the hard friction below a Thymio II's 0.6 s spin in the shapes lesson turns 95
-degrees where Webots' turns 90.4 to 90.9 (wbtc's default contact: 88.9 to 90, its slip making up
-for the rims). The default becomes this once wheel contacts follow ODE's rims.
+Opt-in (`CompileOptions.ode_contacts`, `wbtc run --ode-contacts`), with ODE's bounce
+(wbtc.compile.bounce) and wheels that touch at both cylinder rims (wbtc.compile.joint keeps their
+cylinders). It is Webots' contact, but not Webots' step: a Thymio II's 0.6 s spin in the shapes
+lesson then turns 85.1 degrees, which is what ODE gives at steps of 10 ms and below, where Webots'
+one 20 ms step turns 90.4 to 90.9 (wbtc's default contact: 88.9 to 90, a slip that makes up for it).
 
 Webots solves each contact point as an ODE constraint row whose `softERP` and `softCFM` (0.2 and 0.001
 by default) make it, per point, a spring kp = ERP / (h·CFM) and a damper kd = (1 − ERP) / CFM in
@@ -48,8 +48,8 @@ How the two geoms of a contact combine (MuJoCo's collision driver):
   gave) and both bodies' diag (`pair_static_priority`). Explicit pairs (these and contact's rolling
   pairs) get the exact diag1 + diag2.
 
-Not honoured yet: `bounce`, `bounceVelocity` (ODE's restitution); WorldInfo `CFM` (friction rows are
-hard); a supervisor's change of a mass at run time keeps the impedance computed at compile time.
+Not honoured yet: WorldInfo `CFM` (friction rows are hard); a supervisor's change of a mass at run
+time keeps the impedance computed at compile time.
 """
 
 from __future__ import annotations

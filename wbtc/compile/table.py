@@ -200,6 +200,8 @@ class DeviceTable:
     # (asymmetric ContactLaws, their geoms' materials by geom name): see wbtc.compile.contact.
     asymmetric_friction: tuple[list[Any], dict[str, str]] | None = None
     tracks: list[Any] = field(default_factory=list)
+    # ContactProperties' bounce of every two contact materials: see wbtc.compile.bounce.
+    bounce: Any = None
     paintable: dict[str, tuple[str, float, float, str]] = field(default_factory=dict)
     ink_evaporation: float = 0.0
 

@@ -19,11 +19,12 @@
   is placed in a frame rotated by NUE → ENU, so bodies, joints and sensors need nothing else.
 - Contact softness: by default MuJoCo's contact, stiffer than ODE's (time constant 10 ms). With
   `CompileOptions.ode_contacts`, ContactProperties `softERP` and `softCFM` are recorded here and
-  applied once the model is compiled (wbtc.compile.soft_contact).
+  applied once the model is compiled (wbtc.compile.soft_contact), and `bounce` and
+  `bounceVelocity` are tabled for the runtime (wbtc.compile.bounce).
 
 Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
-single-threaded), `physicsDisable*`, `lineScale`; ContactProperties `bounce`,
-`bounceVelocity`, `forceDependentSlip` (and `softERP`, `softCFM` without `ode_contacts`); Fog;
+single-threaded), `physicsDisable*`, `lineScale`; ContactProperties `forceDependentSlip` (and
+`softERP`, `softCFM`, `bounce`, `bounceVelocity` without `ode_contacts`); Fog;
 Background textures (a plain sky colour is used).
 """
 
@@ -43,8 +44,8 @@ from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
 _UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics"})
-_UNHONOURED_CONTACT = frozenset({"bounce", "bounceVelocity", "forceDependentSlip"})
-_UNHONOURED_STIFF = _UNHONOURED_CONTACT | {"softERP", "softCFM"}
+_UNHONOURED_CONTACT = frozenset({"forceDependentSlip"})
+_UNHONOURED_STIFF = _UNHONOURED_CONTACT | {"softERP", "softCFM", "bounce", "bounceVelocity"}
 #: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
 INFINITE_FRICTION = 100.0
 

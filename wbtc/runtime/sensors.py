@@ -305,7 +305,8 @@ class TouchSensor(Sensor):
                 force = contact.frame.reshape(3, 3).T @ self._force[:3]
                 total += force if second == self.body else -force
         if self.kind == "bumper":
-            return 1.0 if touched else 0.0
+            # With split substeps, what touched in any substep of the step (see wbtc.runtime.substeps).
+            return 1.0 if touched or (sim.touched is not None and self.body in sim.touched) else 0.0
         if not self.has_physics:
             total[:] = 0.0
         else:

@@ -101,6 +101,8 @@ class Simulation:
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
+        # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
+        self.touched: set[int] | None = None
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)

@@ -15,7 +15,9 @@ from typing import TYPE_CHECKING
 import mujoco
 
 from wbtc.runtime import tracks
+from wbtc.runtime.bounce import bounce_hook
 from wbtc.runtime.contact_frames import ContactFrames
+from wbtc.runtime.sensors import TouchSensor
 
 if TYPE_CHECKING:
     from wbtc.runtime.simulation import Simulation
@@ -33,8 +35,17 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
+    bounces = bounce_hook(sim.table.bounce, model)
+    if bounces is not None:
+        hooks.append(bounces)  # last: the rows' references as the other rules leave them
     if not hooks:
+        sim.touched = None
         return mujoco.mj_step
+    if any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values()):
+        sim.touched = set()  # this basic step's, filled substep by substep
+        hooks.append(_touch_recorder(sim.touched))
+    else:
+        sim.touched = None
 
     def step(model: mujoco.MjModel, data: mujoco.MjData) -> None:
         mujoco.mj_step1(model, data)
@@ -43,3 +54,18 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
         mujoco.mj_step2(model, data)
 
     return step
+
+
+def _touch_recorder(touched: set[int]) -> Step:
+    """A hook that adds the bodies of each substep's contacts to `touched`.
+
+    Webots' TouchSensor reads the contacts of its one ODE step; a contact that bounces (wbtc.runtime.
+    bounce) may last less than a basic step here, so a bumper reads what touched in any substep.
+    """
+
+    def record(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        if data.ncon:
+            bodies = model.geom_bodyid[data.contact.geom]
+            touched.update(bodies[bodies[:, 0] != bodies[:, 1]].ravel().tolist())
+
+    return record
