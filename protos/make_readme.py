@@ -34,13 +34,14 @@ FOLDERS = (
     ("humans", "Humans"),
     ("devices", "Devices"),
     ("objects", "Objects and environment"),
+    ("joints", "Joints"),
     ("appearances", "Appearances"),
 )
 #: Folders whose PROTOs hold devices: each gets a device table.
 WITH_DEVICES = ("robots", "vehicles", "humans", "devices")
 #: Header comment lines that are metadata, not description.
 _META = re.compile(r"^#\s*(VRML_SIM|license|license url|keywords|documentation url|tags|template language)\b", re.I)
-_PREFIX = re.compile(r"^wbtc (object|appearance) library:\s*")
+_PREFIX = re.compile(r"^wbtc (object|appearance|joint) library:\s*")
 #: Fields that never hold devices (collision shapes, physics, looks).
 _NO_DEVICE_FIELDS = frozenset({"boundingObject", "physics", "appearance", "geometry", "immersionProperties"})
 
@@ -443,11 +444,12 @@ def render(groups: dict[str, list[Entry]]) -> str:
         for entry in groups[folder]:
             out += _device_section(entry)
 
-    out += ["## Objects and environment (`protos/objects/`)", ""]
-    for entry in groups["objects"]:
-        kind = template_kind(entry.model)
-        out += [f"### {entry.name}", "", f"{entry.description} (root node {entry.base}; template: {kind}.)", ""]
-        out += field_table(entry.fields) + [""]
+    for folder, title in (("objects", "Objects and environment"), ("joints", "Joints")):
+        out += [f"## {title} (`protos/{folder}/`)", ""]
+        for entry in groups[folder]:
+            kind = template_kind(entry.model)
+            out += [f"### {entry.name}", "", f"{entry.description} (root node {entry.base}; template: {kind}.)", ""]
+            out += field_table(entry.fields) + [""]
 
     out += ["## Appearances (`protos/appearances/`)", "",
             "Appearances that share an interface are listed together above its field table.", ""]

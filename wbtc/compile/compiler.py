@@ -13,7 +13,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wbtc.compile import bodyless, bounce, damping, device, soft_contact, still_joints, world
+from wbtc.compile import bodyless, bounce, damping, device, joint_stops, soft_contact, still_joints, world
 from wbtc.compile.context import CompileContext, CompileOptions
 from wbtc.compile.result import CompileResult
 from wbtc.compile.solid import BodyBuilder
@@ -67,6 +67,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         soft_contact.apply(spec, model, ctx)
         ctx.table.bounce = bounce.table(ctx, model, bounce.rules(info_node))
     device.tune_servos(spec, model)
+    joint_stops.apply(model, ctx)  # after tune_servos, which reads the dofs' inverse weights as compiled
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)
     return CompileResult(model, ctx.table, ctx.warnings, ctx.texture_paths, scene, options, spec)
 

@@ -63,6 +63,11 @@ class CompileContext:
     camera_terms: dict[str, tuple[float, float, float]] = field(default_factory=dict)  # appearance._camera_terms
     #: ContactProperties' (softERP, softCFM) by their two materials (see soft_contact).
     contact_softness: dict[frozenset[str], tuple[float, float]] = field(default_factory=dict)
+    #: WorldInfo's ERP and CFM: the default stopERP and stopCFM of joint stops (see joint_stops).
+    world_erp: float = 0.2
+    world_cfm: float = 1e-5
+    #: Each limited joint's stop softness (ERP, CFM), by MuJoCo joint name (see joint_stops).
+    joint_stops: dict[str, tuple[float, float]] = field(default_factory=dict)
     paint: bool | None = None  # the world has a Pen: textured shapes are compiled paintable (see `paintable`)
     _names: dict[str, set[str]] = field(default_factory=dict)
     _warned: set[tuple[str, str]] = field(default_factory=set)

@@ -6,10 +6,13 @@ body's frame, and its `ref` is exactly "the joint value at the pose written in t
 endPoint's pose is kept and `ref = position`: MuJoCo then reports the same joint value Webots'
 PositionSensor does, relative to the zero found by undoing `position` about the axis.
 
-Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `suspensionAxis`,
-`stopERP`, `stopCFM`; a BallJoint's spring and damping per axis (a ball joint with devices is three
-hinges, each with its own parameters; without devices it is one MuJoCo ball joint with the first
-parameters'); SolidReference endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
+Stops (`minStop`, `maxStop`, with `stopERP` and `stopCFM`) become MuJoCo limits with ODE's stop rows
+(`wbtc.compile.joint_stops`).
+
+Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `suspensionAxis`; a
+BallJoint's spring and damping per axis (a ball joint with devices is three hinges, each with its own
+parameters; without devices it is one MuJoCo ball joint with the first parameters'); SolidReference
+endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
 """
 
 from __future__ import annotations
@@ -20,7 +23,7 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
-from wbtc.compile import device
+from wbtc.compile import device, joint_stops
 from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat, quat_conj, quat_rotate, quat_to_mat
 from wbtc.compile.table import RobotEntry
@@ -30,8 +33,7 @@ from wbtc.schema.registry import node_schema
 if TYPE_CHECKING:
     from wbtc.compile.solid import BodyBuilder
 
-_UNHONOURED = frozenset({"suspensionSpringConstant", "suspensionDampingConstant", "suspensionAxis", "stopERP",
-                         "stopCFM"})
+_UNHONOURED = frozenset({"suspensionSpringConstant", "suspensionDampingConstant", "suspensionAxis"})
 
 
 def param(params: Node | None, type_name: str, name: str) -> object:
@@ -173,12 +175,12 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
     return len(robot.devices) - start if robot is not None else 0
 
 
-def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjtJoint, child_pose: Frame,
+def _make(child: mujoco.MjsBody, node: Node, ctx: CompileContext, joint_type: mujoco.mjtJoint, child_pose: Frame,
           anchor: np.ndarray, axis: np.ndarray | None, params: Node | None, params_type: str) -> mujoco.MjsJoint:
     """One MuJoCo joint in the child body's frame."""
     joint = child.add_joint()
     joint.type = joint_type
-    joint.name = ctx.unique("joint", child.name)  # type: ignore[attr-defined]
+    joint.name = ctx.unique("joint", child.name)
     joint.info = info(node)
     inverse = quat_conj(child_pose.quat)
     joint.pos = quat_rotate(inverse, anchor - child_pose.pos)
@@ -192,6 +194,7 @@ def _make(child: mujoco.MjsBody, node: Node, ctx: object, joint_type: mujoco.mjt
     if (low, high) != (0.0, 0.0) and low < high and joint_type != mujoco.mjtJoint.mjJNT_BALL:
         joint.limited = mujoco.mjtLimited.mjLIMITED_TRUE
         joint.range = [low, high]
+        joint_stops.record(ctx, joint, params)
     # MuJoCo 4 takes polynomial coefficients; Webots' spring and damper are the linear terms.
     joint.stiffness = [float(param(params, params_type, "springConstant")), 0.0, 0.0]
     joint.damping = [float(param(params, params_type, "dampingConstant")), 0.0, 0.0]

@@ -21,8 +21,10 @@
   `CompileOptions.ode_contacts`, ContactProperties `softERP` and `softCFM` are recorded here and
   applied once the model is compiled (wbtc.compile.soft_contact), and `bounce` and
   `bounceVelocity` are tabled for the runtime (wbtc.compile.bounce).
+- ERP and CFM: WorldInfo's `ERP` and `CFM` are the default stopERP and stopCFM of joint stops
+  (wbtc.compile.joint_stops); MuJoCo's contacts and other joint rows do not use them.
 
-Not honoured yet: WorldInfo `CFM`, `ERP`, `physics` (plugins), `optimalThreadCount` (MuJoCo runs
+Not honoured yet: WorldInfo `physics` (plugins), `optimalThreadCount` (MuJoCo runs
 single-threaded), `physicsDisable*`, `lineScale`; ContactProperties `forceDependentSlip` (and
 `softERP`, `softCFM`, `bounce`, `bounceVelocity` without `ode_contacts`); Fog;
 Background textures (a plain sky colour is used).
@@ -43,7 +45,7 @@ from wbtc.compile.light import MATERIAL_AMBIENT
 from wbtc.compile.table import plain_fields
 from wbtc.scene.model import Node
 
-_UNHONOURED_WORLD = frozenset({"CFM", "ERP", "physics"})
+_UNHONOURED_WORLD = frozenset({"physics"})
 _UNHONOURED_CONTACT = frozenset({"forceDependentSlip"})
 _UNHONOURED_STIFF = _UNHONOURED_CONTACT | {"softERP", "softCFM", "bounce", "bounceVelocity"}
 #: μ = -1 means infinite friction in Webots; MuJoCo needs a finite number.
@@ -75,6 +77,7 @@ def setup_world(info_node: Node | None, ctx: CompileContext) -> None:
         table.ink_evaporation = max(float(info_node.get("inkEvaporation") or 0.0), 0.0)  # pens' ink fades (runtime.pen)
         damping = info_node.get("defaultDamping")
         ctx.default_damping = damping if isinstance(damping, Node) else None
+        ctx.world_erp, ctx.world_cfm = float(info_node.get("ERP")), float(info_node.get("CFM"))
     step = step if step > 0 else 32.0
     substeps = max(1, math.ceil(step / ctx.options.max_substep_ms - 1e-9))
     table.basic_time_step, table.substeps = step, substeps

@@ -18,6 +18,10 @@ A motor that cannot reach its velocity within the step even with its whole avail
 joint's inertia, bias forces and damping say so; contacts are not counted) gives that torque for the
 whole step instead, as ODE's force-limited motor does (`_saturate`).
 
+A motor whose joint pushes other links through a joint stop acting in the step (`runtime.joint_stops`;
+Webots' backlash joints: a light gear pushing its endPoint) moves them all: its gain grows with the
+inertia the stop adds (`_coupled`), as ODE solves the motor and the stop together.
+
 An untouched motor targets the joint's initial position, so it holds the joint (Webots' rule).
 
 Brake devices add their damping constant to their joint's damping (see commands).
@@ -40,6 +44,7 @@ import numpy as np
 
 from wbtc.compile.table import DeviceEntry
 from wbtc.runtime import kinematic_motors
+from wbtc.runtime.joint_stops import Engaged
 
 
 class Motor:
@@ -52,6 +57,7 @@ class Motor:
         self.qpos_adr = int(model.jnt_qposadr[joint])
         self.dof_adr = int(model.jnt_dofadr[joint])
         self.kv = float(model.actuator_gainprm[self.actuator, 0])
+        self.stiffness = self.kv  # this step's highest gain: kv, more while stops hold other joints (`_coupled`)
         self.gain = self.kv
         self._kinematic: tuple[mujoco.MjModel | None, int] = (None, -1)  # (model, its holding equality)
 
@@ -115,8 +121,15 @@ class Motor:
         elif op in ("setTorque", "setForce"):
             self.torque = min(max(float(args[0]), -self.available), self.available)
 
-    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
-        """Set the actuator for the next basic time step (`ts` seconds)."""
+    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float, stops: Engaged | None = None) -> None:
+        """Set the actuator for the next basic time step (`ts` seconds).
+
+        Args:
+            model: the model.
+            data: its data.
+            ts: the basic time step, in seconds.
+            stops: the stops that act during this step (`runtime.joint_stops`).
+        """
         if self._kinematic[0] is not model:  # looked up once per model (a recompile makes another)
             self._kinematic = (model, kinematic_motors.holding_equality(model, self.entry.joint))
         if self._kinematic[1] >= 0:
@@ -137,8 +150,12 @@ class Motor:
         _, _, qpos, qvel, ctrl, damping = views
         wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
         velocity = float(qvel[self.dof_adr])
+        coupled = self._coupled(model, data, stops, wanted - velocity)
+        self.stiffness = self.kv if coupled is None else max(self.kv, self.kv * coupled[1] / coupled[0])
         mobility = self._limit_gain(model, data, velocity, wanted)
-        if self.gain < self.kv and self._saturate(model, data, wanted, velocity, ts, mobility):
+        if coupled is not None:
+            mobility = coupled[0]  # what the motor moves now, for `_saturate`
+        if self.gain < self.stiffness and self._saturate(model, data, wanted, velocity, ts, mobility):
             return
         if self._written[0] is not model or self._written[1] != self.gain:
             model.actuator_gainprm[a, 0] = self.gain
@@ -241,8 +258,8 @@ class Motor:
             The joint's mobility (see `_mobility`) when it was needed here, for `_saturate`; else None.
         """
         error = wanted - velocity
-        if abs(error) * self.kv <= self.available:
-            self.gain = self.kv
+        if abs(error) * self.stiffness <= self.available:
+            self.gain = self.stiffness
             return None
         if self._constrained(model, data):
             self.gain = max(self.available / abs(error), 1e-12)
@@ -251,7 +268,7 @@ class Motor:
         damping = float(model.dof_damping[d])
         # Bias forces (gravity, Coriolis) less the passive ones other than the damping (springs).
         bias = float(data.qfrc_bias[d]) - float(data.qfrc_passive[d]) - damping * velocity
-        gain = self.kv
+        gain = self.stiffness
         # The torque is monotonic in the inertia, so its bound holds between the joint's inertia with
         # every other joint free (1 / mobility) and with every other joint held (M's diagonal).
         mobility = self._mobility(model, data)
@@ -279,6 +296,55 @@ class Motor:
         mujoco.mj_solveM(model, data, solved, unit)
         value = float(solved[0, d])
         return value / max(1.0 - float(model.dof_armature[d]) * value, 1e-12)  # Sherman-Morrison
+
+    def _coupled(self, model: mujoco.MjModel, data: mujoco.MjData, stops: Engaged | None,
+                 change: float) -> tuple[float, float] | None:
+        """The joint's mobility with the stops it pushes held, and without them; None if it pushes none.
+
+        ODE solves a motor as a velocity row with the stop rows, so a motor whose joint drives other
+        links through a stop (a backlash gear pushing its endPoint) moves them all at its velocity,
+        up to its available torque. The servo's gain, kv, was sized for the joint's inertia with
+        every other joint free (`compile.device.tune_servos`): for a gear of 4e-8 kg m² it could not
+        move a pendulum 200 000 times heavier within a step. While stops of its tree act, the gain
+        is kv times the ratio of the joint's inertia with them held to its inertia without (both
+        with the other servos' armatures, without its own): the same margin over what it now moves.
+
+        A stop counts unless the joint's motion takes its joint away from it: its predicted
+        velocity, with the motor's velocity `change` of this step and every other joint free, does
+        not point out of the stop. A motor reversing away from a stop moves its own link only, as
+        ODE's one-sided stop row lets it.
+
+        The mobility with dofs S held is (M⁻¹)_dd − (M⁻¹)_dS ((M⁻¹)_SS)⁻¹ (M⁻¹)_Sd (M's block
+        inverse), less the servo's own armature as in `_mobility`.
+        """
+        if stops is None or not len(stops.dofs):
+            return None
+        d = self.dof_adr
+        mine = (stops.dofs != d) & (model.dof_treeid[stops.dofs] == model.dof_treeid[d])
+        if not mine.any():
+            return None
+        others, sides = stops.dofs[mine], stops.sides[mine]
+        units = np.zeros((1 + len(others), model.nv))
+        units[0, d] = 1.0
+        units[np.arange(1, len(others) + 1), others] = 1.0
+        solved = np.zeros_like(units)
+        mujoco.mj_solveM(model, data, solved, units)
+        free = float(solved[0, d])
+        if free <= 0.0:
+            return None
+        # How each stop's joint would move: its velocity now plus its share of the motor's change.
+        predicted = data.qvel[others] + solved[0, others] / free * change
+        pushed = sides * predicted >= -1e-12
+        if not pushed.any():
+            return None
+        rows = np.flatnonzero(pushed)
+        held = others[rows]
+        across = solved[0, held]
+        coupled = free - float(across @ np.linalg.solve(solved[1 + rows][:, held], across))
+        if coupled <= 0.0:
+            return None
+        armature = float(model.dof_armature[d])
+        return (coupled / max(1.0 - armature * coupled, 1e-12), free / max(1.0 - armature * free, 1e-12))
 
     def _held_inertia(self, model: mujoco.MjModel, data: mujoco.MjData) -> float:
         """The joint's inertia with every other joint held: its mass-matrix diagonal less the servo's armature."""

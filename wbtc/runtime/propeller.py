@@ -22,6 +22,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.table import DeviceEntry
+from wbtc.runtime.joint_stops import Engaged
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.pushes import Push
 
@@ -42,8 +43,11 @@ class PropellerMotor(Motor):
         self._velocity6 = np.zeros(6)
         self.push = Push()  # its share of qfrc_applied
 
-    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
-        """Turn the helix for the coming basic step and apply its thrust and torque to the body."""
+    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float, stops: Engaged | None = None) -> None:
+        """Turn the helix for the coming basic step and apply its thrust and torque to the body.
+
+        `stops` (the joint stops acting in the step) does not concern a propeller.
+        """
         omega = 0.0 if self.torque is not None else self._velocity_command(ts, self.angle)
         omega = min(max(omega, -self.max_velocity), self.max_velocity)
         self.angle += omega * ts

@@ -1,8 +1,9 @@
 """The simulated world: MuJoCo model and data, every robot's device models, and Webots time.
 
-`Simulation.step()` advances one WorldInfo.basicTimeStep: motors set their servos, MuJoCo takes
-its substeps, then due sensors sample and pending radio packets are delivered. Noise comes from
-one generator seeded by WorldInfo.randomSeed (or the seed given), so runs repeat exactly.
+`Simulation.step()` advances one WorldInfo.basicTimeStep: the joint stops that act in it are decided
+(`joint_stops`), motors set their servos, MuJoCo takes its substeps, then due sensors sample and
+pending radio packets are delivered. Noise comes from one generator seeded by WorldInfo.randomSeed
+(or the seed given), so runs repeat exactly.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
 from wbtc.runtime.grippers import VacuumGripper
+from wbtc.runtime.joint_stops import StopGate
 from wbtc.runtime.kinematic_drive import DriveState
 from wbtc.runtime.lidar import Lidar
 from wbtc.runtime.motors import Motor
@@ -100,6 +102,7 @@ class Simulation:
         self._badqacc: tuple[Any, Any] = (None, None)  # (MjData, its BADQACC warning statistics)
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
+        self._stops: StopGate | None = None  # the joints with stops, per model (see joint_stops)
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
@@ -252,9 +255,12 @@ class Simulation:
         ts = self.step_ms / 1000.0
         model, data = self.model, self.data
         conveyors.drive_belts(self)
+        if self._stops is None or self._stops.model is not model:  # made once per model
+            self._stops = StopGate(model)
+        stops = self._stops.engage(data)  # the stops that act in this step, as ODE decides them
         for robot in self.robots:
             for motor in robot.motors.values():
-                motor.update(model, data, ts)
+                motor.update(model, data, ts, stops)
             for gripper in robot.grippers.values():
                 gripper.update(self)
         for connector in self.connectors:
@@ -269,10 +275,10 @@ class Simulation:
             drive.move(ts)
         if self._still is None or self._still.model is not model:  # made once per model
             self._still = StillJoints(model)
-        held = self._still.positions(data) if len(self._still.qpos) else None
+        still = self._still.positions(data) if len(self._still.qpos) else None
         self._integrate(model, data)
-        if held is not None:
-            self._still.restore(data, held)
+        if still is not None:
+            self._still.restore(data, still)
         for drive in self.drives:
             drive.turn_wheels()
         if self.unstable_at is None:

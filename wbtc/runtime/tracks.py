@@ -51,6 +51,7 @@ import numpy as np
 
 from wbtc.compile.table import DeviceEntry
 from wbtc.compile.track_belt import plate_pose
+from wbtc.runtime.joint_stops import Engaged
 from wbtc.runtime.lookup import quantize
 from wbtc.runtime.motors import Motor
 from wbtc.runtime.sensors import Sensor
@@ -125,8 +126,11 @@ class TrackMotor(Motor):
         self._setup(entry, robot_name)
         self.belt = belt
 
-    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float) -> None:
-        """Move the belt for the coming basic step (Webots drives a belt with its first LinearMotor only)."""
+    def update(self, model: mujoco.MjModel, data: mujoco.MjData, ts: float, stops: Engaged | None = None) -> None:
+        """Move the belt for the coming basic step (Webots drives a belt with its first LinearMotor only).
+
+        `stops` (the joint stops acting in the step) does not concern a belt.
+        """
         if self.belt.motor is self:
             self.belt.advance(model, ts)
 
