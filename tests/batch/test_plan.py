@@ -59,6 +59,8 @@ e-puck = [["1"], ["2", "x"]]
     ("output = \"results.xlsx\"\n", 2, "the output table must be a .csv, .jsonl or .parquet file"),
     ("seeds = [1.5]\n", 2, "seeds must be integers"),
     ("timeout = -1\n", 2, "'timeout' must be a positive number, not -1"),
+    ("physics_step = 0\n", 2, "'physics_step' must be a positive number, not 0"),
+    ("ode_contacts = \"yes\"\n", 2, "'ode_contacts' must be true or false, not 'yes'"),
 ])
 def test_mistakes_name_their_line(tmp_path, text, line, message):
     path = _plan(tmp_path, text)
@@ -84,3 +86,23 @@ def test_invalid_toml_names_the_line(tmp_path):
         read_plan(path)
     assert caught.value.diagnostics[0].span.line == 2
     assert caught.value.diagnostics[0].message.startswith("the plan is not valid TOML")
+
+
+def test_physics_options_reach_every_job_and_its_run(tmp_path, monkeypatch):
+    plan = read_plan(_plan(tmp_path, "seeds = [1, 2]\nphysics_step = 1000\node_contacts = true\n"))
+    jobs = plan.jobs()
+    assert [(j.physics_step, j.ode_contacts) for j in jobs] == [(1000.0, True), (1000.0, True)]
+    assert read_plan(_plan(tmp_path, "")).jobs()[0].physics_step == 2.0  # `wbtc run`'s defaults
+    assert read_plan(_plan(tmp_path, "")).jobs()[0].ode_contacts is False
+    import wbtc.api
+    from wbtc.batch import worker
+
+    seen = {}
+
+    def fake_run(world, **options):  # noqa: ANN001, ANN003, ANN202
+        seen.update(options)
+        raise wbtc.api.WbtcError("stopped here")
+
+    monkeypatch.setattr(wbtc.api, "run", fake_run)
+    assert worker._run(jobs[0]).status == "error"
+    assert (seen["physics_step"], seen["ode_contacts"], seen["seed"]) == (1000.0, True, 1)

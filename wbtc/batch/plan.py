@@ -9,6 +9,8 @@ memory_mb = 2048                        # address-space limit of each process of
 output = "results.csv"                  # .csv, .jsonl or .parquet
 grader = "grader.py:grade"              # optional: grade(result) -> score or (score, message)
 trace = true                            # keep each robot's per-step pose for the grader
+physics_step = 2                        # longest MuJoCo substep, ms (as `wbtc run --physics-step`)
+ode_contacts = false                    # ODE's soft contacts and bounce (as `wbtc run --ode-contacts`)
 
 [controllers]                           # robot name = a folder (one run per .py in it), a file,
 "e-puck" = "submissions/"               # a glob, or a list of those
@@ -45,7 +47,7 @@ from pydantic import BaseModel
 from wbtc.errors import Diagnostic, Span, WbtcError
 
 TOP_KEYS = ("world", "worlds", "duration", "seeds", "timeout", "memory_mb", "output", "grader", "trace",
-            "controllers", "args", "fields")
+            "physics_step", "ode_contacts", "controllers", "args", "fields")
 OUTPUT_SUFFIXES = (".csv", ".jsonl", ".parquet")
 
 
@@ -62,6 +64,8 @@ class Job(BaseModel):
     timeout: float = 600.0
     memory_mb: int | None = None
     trace: bool = True
+    physics_step: float = 2.0
+    ode_contacts: bool = False
     params: dict[str, str] = {}  # the table's parameter columns, as written there
 
     @property
@@ -82,6 +86,8 @@ class Plan(BaseModel):
     output: str
     grader: str | None = None
     trace: bool = True
+    physics_step: float = 2.0
+    ode_contacts: bool = False
     controllers: dict[str, list[str]] = {}
     args: dict[str, list[list[str]]] = {}
     fields: dict[str, list[Any]] = {}
@@ -103,6 +109,7 @@ class Plan(BaseModel):
             jobs.append(Job(
                 index=index, world=values["world"], seed=values["seed"], duration=self.duration,
                 timeout=self.timeout, memory_mb=self.memory_mb, trace=self.trace, params=params,
+                physics_step=self.physics_step, ode_contacts=self.ode_contacts,
                 controllers={n[11:]: v for n, v in values.items() if n.startswith("controller.")},
                 args={n[5:]: v for n, v in values.items() if n.startswith("args.")},
                 fields={n[6:]: v for n, v in values.items() if n.startswith("field.")}))
@@ -178,6 +185,8 @@ def read_plan(path: Path) -> Plan:
                 timeout=_number(data, "timeout", lines, positive=True) or 600.0,
                 memory_mb=int(_number(data, "memory_mb", lines, positive=True) or 4096),
                 trace=bool(data.get("trace", True)), seeds=_seeds(data, lines),
+                physics_step=_number(data, "physics_step", lines, positive=True) or 2.0,
+                ode_contacts=_flag(data, "ode_contacts", lines),
                 controllers=_controllers(data.get("controllers", {}), lines, base),
                 args=_args(data.get("args", {}), lines), fields=_fields(data.get("fields", {}), lines))
     if "grader" in data:
@@ -203,6 +212,13 @@ def _worlds(data: dict[str, Any], lines: _Lines, base: Path) -> list[str]:
             raise lines.error(f"no such world file: {world}", "", key)
         resolved.append(str(full))
     return resolved
+
+
+def _flag(data: dict[str, Any], key: str, lines: _Lines) -> bool:
+    value = data.get(key, False)
+    if not isinstance(value, bool):
+        raise lines.error(f"'{key}' must be true or false, not {value!r}", "", key)
+    return value
 
 
 def _number(data: dict[str, Any], key: str, lines: _Lines, positive: bool = False) -> float | None:

@@ -141,7 +141,8 @@ def _run(job: Job) -> Outcome:
 
     try:
         result = run(job.world, duration=job.duration, seed=job.seed, controllers=job.controllers, args=job.args,
-                     fields=job.fields, timeout=job.timeout, trace=job.trace)
+                     fields=job.fields, timeout=job.timeout, trace=job.trace, physics_step=job.physics_step,
+                     ode_contacts=job.ode_contacts)
     except WbtcError as exc:
         return Outcome(status="error", message=str(exc))
     except MemoryError:
