@@ -1,6 +1,7 @@
 """Port of Webots' tests/protos/controllers/hingejoint_with_backlash at ff91c94b: the pendulum of the R2021b world
-hingejoint_with_backlash.wbt (not a test controller: hingejoint_with_backlash_supervisor checks). Its motor turns
-back and forth, first within the backlash range (+-0.10 rad), then beyond it (+-0.105 rad).
+hingejoint_with_backlash.wbt (not a test controller: hingejoint_with_backlash_supervisor, of the same commit,
+checks). Its motor turns back and forth, first within the backlash range (+-0.10 rad) until 10 s, then, after three
+steps at rest, beyond it (+-0.105 rad) until 20 s.
 """
 
 from controller import Robot
