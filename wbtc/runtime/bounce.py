@@ -41,25 +41,23 @@ def bounce_hook(table: BounceTable | None, model: mujoco.MjModel) -> Hook | None
     regularisation = table.regularisation
 
     def hook(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-        vel = data.efc_vel
-        # Cheap test first: no row of any kind moves into its constraint fast enough to bounce.
-        if not vel.size or vel.min() > -threshold:
+        if not data.ncon:
             return
         contacts = data.contact
-        rows = contacts.efc_address
-        live = rows >= 0
-        if not live.any():
+        # Cheap test first, as this runs at every substep (Python lists: NumPy's calls on a few values
+        # cost more): no contact's normal row (its first, -1 when it has none: a false alarm at worst)
+        # approaches fast enough to bounce.
+        velocities = data.efc_vel.tolist()
+        if min(velocities[row] for row in contacts.efc_address.tolist()) > -threshold:
             return
-        rows = rows[live]
-        first, second = classes[contacts.geom[live, 0]], classes[contacts.geom[live, 1]]
-        known = (first >= 0) & (second >= 0)
-        rows, first, second = rows[known], first[known], second[known]
-        speed = vel[rows]  # the normal row's velocity: negative when the bodies approach
+        rows = contacts.efc_address
+        speed = data.efc_vel[rows]  # negative when the bodies approach
+        first, second = classes[contacts.geom[:, 0]], classes[contacts.geom[:, 1]]
         # Landing: approaching fast enough, and no deeper than this substep's approach, so apart at the
         # substep before. ODE's contact lasts one step, wbtc's soft row several substeps: a contact
         # already being compressed must not bounce again at every substep.
-        depth = -contacts.dist[live][known]
-        landing = (speed < -velocity[first, second]) & (depth <= -speed * model.opt.timestep)
+        landing = ((rows >= 0) & (first >= 0) & (second >= 0) & (speed < -velocity[first, second])
+                   & (contacts.dist >= speed * model.opt.timestep))
         if not landing.any():
             return
         rows, speed = rows[landing], speed[landing]

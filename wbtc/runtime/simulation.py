@@ -106,6 +106,7 @@ class Simulation:
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
+        self.bounces: tuple[Any, Any] = (None, None)  # (MjModel, its bounce hook or None): see substeps
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)
@@ -160,6 +161,10 @@ class Simulation:
         substep = substeps.substep_function(self, model)
         if not motors and substep is mujoco.mj_step:
             mujoco.mj_step(model, data, nstep=self.substeps)
+            return
+        if not motors:  # split substeps (see substeps), nothing to meter
+            for _ in range(self.substeps):
+                substep(model, data)
             return
         actuators = [m.actuator for m in motors]
         dofs = [m.dof_adr for m in motors]

@@ -35,7 +35,9 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
-    bounces = bounce_hook(sim.table.bounce, model)
+    if sim.bounces[0] is not model:  # made once per model
+        sim.bounces = (model, bounce_hook(sim.table.bounce, model))
+    bounces = sim.bounces[1]
     if bounces is not None:
         hooks.append(bounces)  # last: the rows' references as the other rules leave them
     if not hooks:
