@@ -48,8 +48,8 @@ def bounce_hook(table: BounceTable | None, model: mujoco.MjModel) -> Hook | None
         # cost more): no contact's normal row (its first, -1 when it has none: a false alarm at worst)
         # approaches fast enough to bounce.
         velocities = data.efc_vel.tolist()
-        if min(velocities[row] for row in contacts.efc_address.tolist()) > -threshold:
-            return
+        if not velocities or min(velocities[row] for row in contacts.efc_address.tolist()) > -threshold:
+            return  # (no rows at all: every contact excluded, or a robot's own parts touching)
         rows = contacts.efc_address
         speed = data.efc_vel[rows]  # negative when the bodies approach
         first, second = classes[contacts.geom[:, 0]], classes[contacts.geom[:, 1]]
