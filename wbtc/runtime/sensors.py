@@ -290,6 +290,10 @@ class TouchSensor(Sensor):
 
     def sample(self, sim: Simulation) -> float | list[float]:
         """Contact state or force on the sensor's body."""
+        if self.kind == "bumper" and sim.touched is not None:
+            # Split substeps: what touched in any substep of the step, the last one's contacts included
+            # (see wbtc.runtime.substeps).
+            return 1.0 if self.body in sim.touched else 0.0
         data, model = sim.data, sim.model
         total = np.zeros(3)
         touched = False
@@ -305,8 +309,7 @@ class TouchSensor(Sensor):
                 force = contact.frame.reshape(3, 3).T @ self._force[:3]
                 total += force if second == self.body else -force
         if self.kind == "bumper":
-            # With split substeps, what touched in any substep of the step (see wbtc.runtime.substeps).
-            return 1.0 if touched or (sim.touched is not None and self.body in sim.touched) else 0.0
+            return 1.0 if touched else 0.0
         if not self.has_physics:
             total[:] = 0.0
         else:

@@ -106,7 +106,8 @@ class Simulation:
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
-        self.bounces: tuple[Any, Any] = (None, None)  # (MjModel, its bounce hook or None): see substeps
+        # (MjModel, its bounce hook or None, whether a robot has a TouchSensor): see substeps.
+        self.per_model: tuple[Any, Any, bool] = (None, None, False)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run
         self.labels: dict[int, tuple] = {}  # supervisor labels: id -> (text, x, y, size, 0xRRGGBB, transparency, font)

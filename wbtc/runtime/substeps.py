@@ -35,15 +35,16 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
-    if sim.bounces[0] is not model:  # made once per model
-        sim.bounces = (model, bounce_hook(sim.table.bounce, model))
-    bounces = sim.bounces[1]
+    if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
+        touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
+        sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch)
+    _, bounces, touch = sim.per_model
     if bounces is not None:
         hooks.append(bounces)  # last: the rows' references as the other rules leave them
     if not hooks:
         sim.touched = None
         return mujoco.mj_step
-    if any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values()):
+    if touch:
         sim.touched = set()  # this basic step's, filled substep by substep
         hooks.append(_touch_recorder(sim.touched))
     else:
