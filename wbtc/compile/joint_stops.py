@@ -35,11 +35,9 @@ from __future__ import annotations
 import mujoco
 
 from wbtc.compile.context import CompileContext
-from wbtc.compile.soft_contact import Softness, row_terms
+from wbtc.compile.soft_contact import MAX_IMP, Softness, row_terms
 from wbtc.scene.model import Node
 
-#: MuJoCo's upper bound of a constraint's impedance (mjMAXIMP).
-_MAX_IMP = 0.9999
 #: Webots' "use WorldInfo's value" for stopERP and stopCFM.
 _WORLD = -1.0
 
@@ -70,7 +68,7 @@ def apply(model: mujoco.MjModel, ctx: CompileContext) -> None:
         dof = int(model.jnt_dofadr[joint])
         terms = row_terms(Softness(erp, cfm), basic, substep)
         # The largest diag whose impedance MuJoCo can still represent gives R exactly (see above).
-        diag = min(float(model.dof_invweight0[dof]), terms.r * _MAX_IMP / (1.0 - _MAX_IMP))
+        diag = min(float(model.dof_invweight0[dof]), terms.r * MAX_IMP / (1.0 - MAX_IMP))
         model.dof_invweight0[dof] = diag
         solref, solimp = terms.parameters(diag)
         model.jnt_solref[joint] = solref

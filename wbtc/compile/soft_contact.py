@@ -70,7 +70,7 @@ FRICTION_IMPRATIO = 1e-3
 #: Sweeps of MuJoCo's noslip pass, which solves the friction rows hard within the normal forces found.
 NOSLIP_ITERATIONS = 10
 #: MuJoCo's bounds of a constraint's impedance (mjMINIMP, mjMAXIMP).
-_MIN_IMP, _MAX_IMP = 1e-4, 0.9999
+MIN_IMP, MAX_IMP = 1e-4, 0.9999
 #: The solref of a static geom: direct, and above every moving geom's, so that the minimum MuJoCo
 #: takes of two direct solrefs is always the moving geom's.
 STATIC_SOLREF = (-1e-12, -1e-12)
@@ -97,7 +97,7 @@ class RowTerms:
 
     def parameters(self, diag: float) -> tuple[list[float], list[float]]:
         """(solref, solimp) of a contact whose two bodies' inverse weights sum to `diag`."""
-        imp = min(max(diag / (diag + self.r), _MIN_IMP), _MAX_IMP) if diag > 0 else _MIN_IMP
+        imp = min(max(diag / (diag + self.r), MIN_IMP), MAX_IMP) if diag > 0 else MIN_IMP
         # MuJoCo's direct solref: K = −solref[0] / dmax², B = −solref[1] / dmax, dmax = imp (flat).
         solref = [-self.stiffness * imp, -self.damping * imp]
         return solref, [imp, imp, 0.001, 0.5, 2.0]
