@@ -23,7 +23,6 @@ import numpy as np
 
 from wbtc.compile import soft_contact
 from wbtc.compile.context import CompileContext
-from wbtc.scene.model import Node
 
 #: A ContactProperties' `bounce` and `bounceVelocity` defaults, which an unmatched contact gets.
 DEFAULT_BOUNCE, DEFAULT_VELOCITY = 0.5, 0.01
@@ -56,19 +55,12 @@ class BounceTable:
         return float(self.velocity[bouncing].min()) if bouncing.any() else float("inf")
 
 
-def rules(info_node: Node | None) -> list[tuple[frozenset[str], float, float]]:
-    """WorldInfo's ContactProperties as (materials, bounce, bounceVelocity), in Webots' search order."""
-    found = []
-    for props in (info_node.get("contactProperties") if info_node is not None else None) or []:
-        if isinstance(props, Node):
-            materials = frozenset((str(props.get("material1")), str(props.get("material2"))))
-            found.append((materials, float(props.get("bounce")), float(props.get("bounceVelocity"))))
-    return found
+def table(ctx: CompileContext, model: mujoco.MjModel) -> BounceTable:
+    """The BounceTable of a compiled model (geom ids are the compiled ones, so after `compile`).
 
-
-def table(ctx: CompileContext, model: mujoco.MjModel,
-          found: list[tuple[frozenset[str], float, float]]) -> BounceTable:
-    """The BounceTable of a compiled model (geom ids are the compiled ones, so after `compile`)."""
+    The (bounce, bounceVelocity) of two materials are `ctx.contact_bounce`'s, which
+    `world.apply_friction` fills with the first ContactProperties of each pair, as Webots matches them.
+    """
     materials: list[str] = []
     geom_class = np.full(model.ngeom, -1, dtype=np.int32)
     for geom, solid in ctx.contact_geoms:
@@ -84,8 +76,7 @@ def table(ctx: CompileContext, model: mujoco.MjModel,
     for i, first in enumerate(materials):
         for j, second in enumerate(materials):
             regularisation[i, j] = soft_contact.softness_of(ctx, first, second).cfm / basic
-            for pair, value, speed in found:
-                if pair == frozenset((first, second)):  # the first match wins, as in Webots
-                    bounce[i, j], velocity[i, j] = min(max(value, 0.0), 1.0), max(speed, 0.0)
-                    break
+            found = ctx.contact_bounce.get(frozenset((first, second)))
+            if found is not None:
+                bounce[i, j], velocity[i, j] = min(max(found[0], 0.0), 1.0), max(found[1], 0.0)
     return BounceTable(geom_class, materials, bounce, velocity, regularisation)

@@ -65,7 +65,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     model = _compile(spec)
     if options.ode_contacts:
         soft_contact.apply(spec, model, ctx)
-        ctx.table.bounce = bounce.table(ctx, model, bounce.rules(info_node))
+        ctx.table.bounce = bounce.table(ctx, model)
     device.tune_servos(spec, model)
     joint_stops.apply(model, ctx)  # after tune_servos, which reads the dofs' inverse weights as compiled
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)

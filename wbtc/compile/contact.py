@@ -79,6 +79,7 @@ class ContactLaw:
         rho: rollingFriction (rho, rho2, rhoN), -1 made INFINITE.
         rotation: frictionRotation (S1's angle, S2's angle), radians.
         softness: (softERP, softCFM), see wbtc.compile.soft_contact.
+        bounce: (bounce, bounceVelocity), see wbtc.compile.bounce.
     """
 
     materials: tuple[str, str]
@@ -86,6 +87,7 @@ class ContactLaw:
     rho: tuple[float, float, float]
     rotation: tuple[float, float]
     softness: tuple[float, float] = (0.2, 0.001)
+    bounce: tuple[float, float] = (0.5, 0.01)
 
     @property
     def asymmetric(self) -> bool:
@@ -110,8 +112,9 @@ def read_law(props: Node) -> ContactLaw:
     rho = tuple(_finite(float(v)) for v in (props.get("rollingFriction") or (0.0, 0.0, 0.0)))
     rotation = tuple(float(v) for v in (props.get("frictionRotation") or (0.0, 0.0)))
     softness = (float(props.get("softERP")), float(props.get("softCFM")))
+    bounce = (float(props.get("bounce")), float(props.get("bounceVelocity")))
     return ContactLaw((str(props.get("material1")), str(props.get("material2"))), mu,
-                      (rho[0], rho[1], rho[2]), (rotation[0], rotation[1]), softness)
+                      (rho[0], rho[1], rho[2]), (rotation[0], rotation[1]), softness, bounce)
 
 
 def _finite(value: float) -> float:

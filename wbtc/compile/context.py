@@ -63,6 +63,8 @@ class CompileContext:
     camera_terms: dict[str, tuple[float, float, float]] = field(default_factory=dict)  # appearance._camera_terms
     #: ContactProperties' (softERP, softCFM) by their two materials (see soft_contact).
     contact_softness: dict[frozenset[str], tuple[float, float]] = field(default_factory=dict)
+    #: ContactProperties' (bounce, bounceVelocity) by their two materials (see bounce).
+    contact_bounce: dict[frozenset[str], tuple[float, float]] = field(default_factory=dict)
     #: WorldInfo's ERP and CFM: the default stopERP and stopCFM of joint stops (see joint_stops).
     world_erp: float = 0.2
     world_cfm: float = 1e-5

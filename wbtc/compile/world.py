@@ -181,6 +181,7 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
         law = contact.read_law(props)
         laws.append(law)
         ctx.contact_softness.setdefault(frozenset(law.materials), law.softness)
+        ctx.contact_bounce.setdefault(frozenset(law.materials), law.bounce)
         mu = _mu(props)
         pair = {str(props.get("material1")), str(props.get("material2"))}
         if pair == {"default"}:
