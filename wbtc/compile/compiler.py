@@ -13,7 +13,17 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
-from wbtc.compile import bodyless, bounce, damping, device, joint_stops, soft_contact, still_joints, world
+from wbtc.compile import (
+    bodyless,
+    bounce,
+    damping,
+    device,
+    hfield_refine,
+    joint_stops,
+    soft_contact,
+    still_joints,
+    world,
+)
 from wbtc.compile.context import CompileContext, CompileOptions
 from wbtc.compile.result import CompileResult
 from wbtc.compile.solid import BodyBuilder
@@ -58,6 +68,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     if options.strict and ctx.warnings:
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     _planes_in_moving_bodies(spec)
+    hfield_refine.refine_height_fields(spec, _moves)
     still_joints.hold_still_joints(spec)
     bodyless.separate_bodyless(spec)
     if options.ode_contacts:

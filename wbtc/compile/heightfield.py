@@ -5,6 +5,7 @@ in files older than R2022a), `thickness`; with the conversions to MuJoCo's centr
 `hfield` (see `HeightField`).
 
 Not honoured yet: the texture mapping (the caller maps the texture over the whole grid).
+A colliding grid may then be sampled finer, on the same triangles (wbtc.compile.hfield_refine).
 """
 
 from __future__ import annotations
