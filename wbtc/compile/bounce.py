@@ -61,14 +61,7 @@ def table(ctx: CompileContext, model: mujoco.MjModel) -> BounceTable:
     The (bounce, bounceVelocity) of two materials are `ctx.contact_bounce`'s, which
     `world.apply_friction` fills with the first ContactProperties of each pair, as Webots matches them.
     """
-    materials: list[str] = []
-    geom_class = np.full(model.ngeom, -1, dtype=np.int32)
-    for geom, solid in ctx.contact_geoms:
-        material = str(solid.get("contactMaterial"))
-        if material not in materials:
-            materials.append(material)
-        if 0 <= geom.id < model.ngeom:
-            geom_class[geom.id] = materials.index(material)
+    geom_class, materials = soft_contact.material_classes(ctx, model)
     n = len(materials)
     bounce, velocity = np.full((n, n), DEFAULT_BOUNCE), np.full((n, n), DEFAULT_VELOCITY)
     regularisation = np.zeros((n, n))

@@ -20,6 +20,7 @@ from wbtc.compile import (
     device,
     hfield_refine,
     joint_stops,
+    recovery,
     soft_contact,
     still_joints,
     world,
@@ -77,6 +78,8 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     if options.ode_contacts:
         soft_contact.apply(spec, model, ctx)
         ctx.table.bounce = bounce.table(ctx, model)
+    else:
+        ctx.table.recovery = recovery.table(ctx, model)
     device.tune_servos(spec, model)
     joint_stops.apply(model, ctx)  # after tune_servos, which reads the dofs' inverse weights as compiled
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)

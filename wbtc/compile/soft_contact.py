@@ -115,6 +115,19 @@ def row_terms(softness: Softness, basic_step: float, substep: float) -> RowTerms
     return RowTerms(cfm_s / substep, erp_s / substep**2, 1.0 / substep)
 
 
+def material_classes(ctx: CompileContext, model: mujoco.MjModel) -> tuple[np.ndarray, list[str]]:
+    """Each compiled collision geom's contact-material index (-1: none), and the materials in order of first use."""
+    materials: list[str] = []
+    geom_class = np.full(model.ngeom, -1, dtype=np.int32)
+    for geom, solid in ctx.contact_geoms:
+        material = str(solid.get("contactMaterial"))
+        if material not in materials:
+            materials.append(material)
+        if 0 <= geom.id < model.ngeom:
+            geom_class[geom.id] = materials.index(material)
+    return geom_class, materials
+
+
 def softness_of(ctx: CompileContext, material1: str, material2: str) -> Softness:
     """The softness of a contact between two contact materials: their ContactProperties', else Webots' defaults."""
     found = ctx.contact_softness.get(frozenset((material1, material2)))

@@ -202,6 +202,8 @@ class DeviceTable:
     tracks: list[Any] = field(default_factory=list)
     # ContactProperties' bounce of every two contact materials: see wbtc.compile.bounce.
     bounce: Any = None
+    # ODE's push-out speed of deep contacts, MuJoCo's default contact only: see wbtc.compile.recovery.
+    recovery: Any = None
     paintable: dict[str, tuple[str, float, float, str]] = field(default_factory=dict)
     ink_evaporation: float = 0.0
 

@@ -83,6 +83,7 @@ def set_local_pose(sim: Simulation, node: Node, translation: list[float] | None,
         model.body_pos[body] = pos
         model.body_quat[body] = quat / np.linalg.norm(quat)
     mujoco.mj_kinematics(model, data)
+    sim.moved = True
     return True
 
 

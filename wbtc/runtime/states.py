@@ -99,6 +99,7 @@ def restore(sim: Simulation, root: int, state: State) -> None:
                 if saved_joint is not None and len(saved_joint[0]) == 1:
                     motor.apply("setPosition", (float(saved_joint[0][0]),))
     mujoco.mj_forward(model, data)
+    sim.moved = True
 
 
 def set_joint_position(sim: Simulation, joint: Node, end: Node, position: float, index: int) -> str | None:
@@ -120,6 +121,7 @@ def set_joint_position(sim: Simulation, joint: Node, end: Node, position: float,
     else:
         _set_axis_position(sim, first + index - 1, position)
     mujoco.mj_forward(model, sim.data)
+    sim.moved = True  # the end point may now overlap something (wbtc.runtime.recovery)
     return warning
 
 

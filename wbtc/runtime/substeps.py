@@ -1,10 +1,11 @@
 """The function that takes one MuJoCo substep: `mj_step`, or a split step where Webots' contact rules act.
 
 Webots decides some things per contact that MuJoCo's model cannot say: the directions of
-asymmetric friction (`contact_frames`) and the surface velocity of Tracks' belts (`tracks`). When a
-world has either, each substep runs `mj_step1`, then the rules on this substep's contacts (the
-friction directions first, as they rebuild the constraints, then the belts' velocities), then
-`mj_step2`; otherwise it is plain `mj_step`.
+asymmetric friction (`contact_frames`), the surface velocity of Tracks' belts (`tracks`), ODE's
+push-out speed of bodies placed inside each other (`recovery`, while they are) and restitution
+(`bounce`, with `--ode-contacts`). When a step has any, each substep runs `mj_step1`, then the rules
+on this substep's contacts (the friction directions first, as they rebuild the constraints, then the
+belts' velocities), then `mj_step2`; otherwise it is plain `mj_step`.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ import mujoco
 from wbtc.runtime import tracks
 from wbtc.runtime.bounce import bounce_hook
 from wbtc.runtime.contact_frames import ContactFrames
+from wbtc.runtime.recovery import recovery_for
 from wbtc.runtime.sensors import TouchSensor
 
 if TYPE_CHECKING:
@@ -37,8 +39,16 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
         hooks.append(belts)
     if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
         touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
-        sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch)
-    _, bounces, touch = sim.per_model
+        sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch,
+                         recovery_for(sim.table.recovery, model))
+        sim.moved = True  # a new model: look for placed overlaps
+    _, bounces, touch, recover = sim.per_model
+    if recover is not None:
+        if sim.moved:
+            recover.find(model, sim.data)
+        if recover.pairs:
+            hooks.append(recover.hook)
+    sim.moved = False
     if bounces is not None:
         hooks.append(bounces)  # last: the rows' references as the other rules leave them
     if not hooks:

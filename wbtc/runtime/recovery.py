@@ -1,0 +1,84 @@
+"""Bodies placed inside each other pushed apart at ODE's speed, not MuJoCo's (see wbtc.compile.recovery).
+
+MuJoCo's contact row has the reference acceleration a_ref = −B·v − K·imp·r of a stiff spring: a body
+started 3 cm inside the floor leaves it at 1.2 m/s and hops. ODE's row takes softERP of the depth
+out per basic step; as a speed over the substeps, `rate` × depth (see wbtc.compile.recovery).
+
+This applies to overlaps that were placed, not to impacts: the pairs of geoms deeper than `DEEP`
+into each other when the simulation starts, after a supervisor moved a body, or after the world was
+recompiled (a regenerated bounding object, an imported node). While such a pair is that deep, the
+basic step's substeps are split (wbtc.runtime.substeps) and each of its deep contacts' normal rows
+gets a_ref = min(a_ref, (rate × depth − v) / h), h the substep, v its normal speed (positive apart):
+the velocity change that takes it to ODE's speed within the substep, never more than MuJoCo's own.
+A pair leaves the set once it is no deeper than `DEEP`.
+
+Impacts keep MuJoCo's row: its spring sends a ball back off a post much as Webots' default bounce
+does, where ODE's push-out speed would leave it stuck. So do resting contacts (0.03 mm deep for a
+box, 0.5 mm under a 2000 kg car), which ODE's speed would let sink deeper.
+
+wbtc's cone is elliptic (wbtc.compile.world), so a contact's normal row is its first row.
+"""
+
+from __future__ import annotations
+
+import mujoco
+import numpy as np
+
+from wbtc.compile.recovery import RecoveryTable
+
+#: Placed overlaps deeper than this (metres) get ODE's push-out. Below it MuJoCo's own throws a body
+#: out less than 0.1 mm above where it rests.
+DEEP = 1e-3
+
+
+class Recovery:
+    """The overlapping pairs of one model and the hook that caps their rows.
+
+    Attributes:
+        pairs: (geom, geom) pairs, lower id first, placed deeper than `DEEP` and not yet out.
+    """
+
+    def __init__(self, table: RecoveryTable, model: mujoco.MjModel) -> None:
+        self.classes, self.rate = table.geom_class, table.rate
+        self.model = model
+        self.pairs: set[tuple[int, int]] = set()
+
+    def find(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """Add the pairs that overlap now (the poses as they are; contacts found again)."""
+        mujoco.mj_collision(model, data)
+        self.pairs |= {pair for pair, depth in _deepest(data).items() if depth < -DEEP}
+
+    def hook(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+        """After `mj_step1`: cap the rows of the overlapping pairs' deep contacts; drop the pairs that are out."""
+        deepest = _deepest(data)
+        self.pairs = {pair for pair in self.pairs if deepest.get(pair, 0.0) < -DEEP}
+        if not self.pairs:
+            return
+        contacts = data.contact
+        rows = contacts.efc_address
+        first, second = self.classes[contacts.geom[:, 0]], self.classes[contacts.geom[:, 1]]
+        placed = np.array([(min(a, b), max(a, b)) in self.pairs for a, b in contacts.geom.tolist()])
+        chosen = placed & (contacts.dist < -DEEP) & (rows >= 0) & (first >= 0) & (second >= 0)
+        if not chosen.any():
+            return
+        rows = rows[chosen]
+        target = self.rate[first[chosen], second[chosen]] * -contacts.dist[chosen]
+        wanted = (target - data.efc_vel[rows]) / model.opt.timestep
+        data.efc_aref[rows] = np.minimum(data.efc_aref[rows], wanted)
+
+
+def recovery_for(table: RecoveryTable | None, model: mujoco.MjModel) -> Recovery | None:
+    """The Recovery of `model`, or None when it has no table (`--ode-contacts`: ODE's rows already)."""
+    if table is None or len(table.geom_class) != model.ngeom or not len(table.rate):
+        return None
+    return Recovery(table, model)
+
+
+def _deepest(data: mujoco.MjData) -> dict[tuple[int, int], float]:
+    """The deepest contact distance of each touching pair of geoms (lower id first)."""
+    deepest: dict[tuple[int, int], float] = {}
+    if data.ncon:
+        for (a, b), dist in zip(data.contact.geom.tolist(), data.contact.dist.tolist(), strict=True):
+            pair = (a, b) if a < b else (b, a)
+            deepest[pair] = min(dist, deepest.get(pair, 0.0))
+    return deepest
