@@ -29,6 +29,10 @@ MuJoCo mapping, and why:
   the "default" material would need a pair per geom of the world, so it is set on the geoms of the
   other material instead (condim and friction (μ, spin, roll), higher priority), where MuJoCo has one
   rolling coefficient: rho2 is not honoured there.
+- Sliding friction between two non-default materials (one μ, no rolling): explicit pairs the same
+  way, condim 3, friction (μ, μ): MuJoCo's geoms carry one μ each, which would give that μ to every
+  other contact of the two materials (a gripper's μ 10 with its stick also between the stick and
+  the floor). The first ContactProperties of two materials wins, as in Webots; later ones are ignored.
 - MuJoCo's friction cone couples sliding and rolling (elliptic: Σ(f_i/μ_i)² ≤ N²) where ODE bounds
   each row on its own, so a ball whose rolling friction is at its limit slips a little in MuJoCo;
   the elliptic cone (wbtc's) comes much closer to ODE than the pyramidal one on Webots' test.
@@ -67,6 +71,11 @@ INFINITE = 100.0
 _DIRECTED = (mujoco.mjtGeom.mjGEOM_PLANE, mujoco.mjtGeom.mjGEOM_BOX, mujoco.mjtGeom.mjGEOM_CYLINDER)
 #: MuJoCo clamps friction coefficients below its mjMINMU (1e-5) up to it; 0 stands for "none".
 NO_FRICTION = 0.0
+
+
+#: MuJoCo's torsional and rolling coefficients of a contact without ODE rolling rows (MuJoCo's defaults;
+#: unused at condim 3, which every contact without rolling friction has).
+SPIN_FRICTION, ROLL_FRICTION = 0.005, 0.0001
 
 
 @dataclass(frozen=True)
@@ -149,9 +158,16 @@ def apply_contact_laws(laws: list[ContactLaw], ctx: CompileContext, solref: list
     for index, (geom, solid) in enumerate(ctx.contact_geoms):
         geoms_of.setdefault(str(solid.get("contactMaterial")), []).append((index, geom))
     excluded = {frozenset((e.bodyname1, e.bodyname2)) for e in ctx.spec.excludes}
+    seen: set[frozenset[str]] = set()
     for law in laws:
+        if frozenset(law.materials) in seen:
+            continue  # Webots takes the first ContactProperties that matches two materials
+        seen.add(frozenset(law.materials))
         if law.rolling:
             _rolling(law, geoms_of, ctx, solref, excluded)
+        elif "default" not in law.materials and not law.asymmetric:
+            mu = surface_mu(law, None)[0]
+            _pairs(law, geoms_of, ctx, solref, excluded, 3, [mu, mu, SPIN_FRICTION, ROLL_FRICTION, ROLL_FRICTION])
     # Webots falls back to the first μ (what the geoms carry) unless both geometries give directions.
     asymmetric = [law for law in laws if law.asymmetric
                   and all(any(g.type in _DIRECTED for _, g in geoms_of.get(m, [])) for m in law.materials)]
@@ -176,8 +192,17 @@ def _rolling(law: ContactLaw, geoms_of: dict[str, list[tuple[int, mujoco.MjsGeom
             geom.friction = [friction[0], friction[2], max(friction[3], friction[4])]
             geom.priority = 2
         return
+    _pairs(law, geoms_of, ctx, solref, excluded, condim, friction)
+
+
+def _pairs(law: ContactLaw, geoms_of: dict[str, list[tuple[int, mujoco.MjsGeom]]], ctx: CompileContext,
+           solref: list[float], excluded: set[frozenset[str]], condim: int, friction: list[float]) -> None:
+    """An explicit MuJoCo pair, with the law's condim and friction, for every two geoms of its two materials."""
+    first, second = law.materials
     for index1, geom1 in geoms_of.get(first, []):
         for index2, geom2 in geoms_of.get(second, []):
+            if first == second and index2 <= index1:
+                continue  # each two geoms of one material once
             if geom1 is geom2 or not may_touch(geom1, geom2, excluded):
                 continue
             pair = ctx.spec.add_pair()

@@ -7,7 +7,9 @@
 - Friction: ODE's Coulomb μ of each `contactMaterial` pair. MuJoCo combines two geoms' frictions
   by their priority, else by maximum: geoms whose material has a ("default", M) ContactProperties
   get μ and a higher priority, so they win against default geoms; a ("default", "default") entry
-  sets everyone's μ. A pair of two non-default materials is approximated by the first rule.
+  sets everyone's μ. Two non-default materials get explicit MuJoCo pairs for their geoms with the
+  pair's own μ (wbtc.compile.contact), so their geoms keep the default μ against anything else; an
+  asymmetric pair of two non-default materials is still approximated by the first rule.
   Rolling friction and asymmetric friction (several μ, `frictionRotation`): see wbtc.compile.contact.
 - Ambient light: Webots has no headlight. Its PBRAppearances are lit by the Background (image-based
   light; a plain sky colour without cube maps) and its Materials by the lights' ambientIntensity.
@@ -188,11 +190,12 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
             default_mu = mu
         elif "default" in pair:
             by_material[(pair - {"default"}).pop()] = mu
-        else:
+        elif law.asymmetric:
             for material in pair:
                 by_material.setdefault(material, mu)
             ctx.warn("friction between two non-default contact materials is approximated per material",
                      props.span)
+        # Else the two materials' geoms get explicit pairs with this law's friction (contact.apply_contact_laws).
     # Contacts stiffer than MuJoCo's default (time constant 0.02 s), so robots sink about as little
     # as in ODE; much stiffer (two substeps) and light robots such as the e-puck start to hop. With
     # ode_contacts, soft_contact.apply replaces them with ODE's, body by body, once the model is compiled.
@@ -201,7 +204,7 @@ def apply_friction(info_node: Node | None, ctx: CompileContext) -> None:
         geom.solref = solref
         material = str(solid.get("contactMaterial"))
         mu = by_material.get(material, default_mu)
-        geom.friction = [mu, 0.005, 0.0001]
+        geom.friction = [mu, contact.SPIN_FRICTION, contact.ROLL_FRICTION]
         geom.priority = 1 if material in by_material else 0
     contact.apply_contact_laws(laws, ctx, solref)
 
