@@ -80,6 +80,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         ctx.table.bounce = bounce.table(ctx, model)
     else:
         ctx.table.recovery = recovery.table(ctx, model)
+    ctx.table.cad_geoms = [g.id for g in ctx.cad_geoms if 0 <= g.id < model.ngeom]
     device.tune_servos(spec, model)
     joint_stops.apply(model, ctx)  # after tune_servos, which reads the dofs' inverse weights as compiled
     damping.damp_free_joints(model, ctx.damped, ctx.table.linear_damping)

@@ -52,6 +52,8 @@ class CompileContext:
     table: DeviceTable = field(default_factory=DeviceTable)
     warnings: list[Diagnostic] = field(default_factory=list)
     contact_geoms: list[tuple[mujoco.MjsGeom, Node]] = field(default_factory=list)
+    # CadShapes' visual geoms: Webots' infra-red rays pass through them (see wbtc.compile.cad_shape).
+    cad_geoms: list[mujoco.MjsGeom] = field(default_factory=list)
     default_damping: Node | None = None
     damped: list[tuple[str, float, float]] = field(default_factory=list)  # free joint, linear and angular rates
     texture_paths: dict[str, str] = field(default_factory=dict)

@@ -194,8 +194,8 @@ def finish_led(entry: DeviceEntry, body: mujoco.MjsBody, ctx: CompileContext, fi
     # A merged LED names its shapes after its site ("robot/led"), as its own body would.
     prefix = f"{body.name if first is None else entry.site}/shape"
     for index, geom in enumerate(body.geoms):
-        if index < (first or 0) or geom.group != VISUAL_GROUP:
-            continue
+        if index < (first or 0) or geom.group != VISUAL_GROUP or geom.info.endswith(" CadShape"):
+            continue  # Webots' LED lights the Shapes among its children, never a CadShape
         if not geom.name:
             geom.name = ctx.unique("geom", f"{prefix}{index - (first or 0)}")
         names.append(geom.name)

@@ -86,6 +86,34 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
                            clamp=texture_clamp, painted=painted, visual=not collision)
     if geom_spec is None:
         return None
+    geom = _add_geom(body, geom_spec, node, collision=collision, rgba=rgba, material=material, name=name)
+    return geom, _mass_props(geom_spec) if collision else None
+
+
+def add_visual_mesh(body: mujoco.MjsBody, node: Node, data: MeshData, frame: Frame, ctx: CompileContext, *,
+                    rgba: np.ndarray, material: str | None, textured: bool) -> mujoco.MjsGeom:
+    """Add a visual mesh geom made from a triangle mesh that is not a geometry node's (a CadShape's part).
+
+    Args:
+        body: the MuJoCo body that holds the geom.
+        node: the node the mesh comes from (names the mesh, and the geom's `info`).
+        data: the triangle mesh, in the node's frame.
+        frame: the node's frame in the body (Transform scale included).
+        ctx: the compile context.
+        rgba: the geom's colour.
+        material: its MuJoCo material.
+        textured: the material has a texture: the mesh keeps its texture coordinates.
+
+    Returns:
+        The geom (massless, colliding with nothing).
+    """
+    geom_spec = _mesh_data(node, data, frame, ctx, textured)
+    return _add_geom(body, geom_spec, node, collision=False, rgba=rgba, material=material, name=None)
+
+
+def _add_geom(body: mujoco.MjsBody, geom_spec: GeomSpec, node: Node, *, collision: bool, rgba: np.ndarray | None,
+              material: str | None, name: str | None) -> mujoco.MjsGeom:
+    """The geom of a `GeomSpec`: a bounding object's (collides, hidden) or a shape's (visual only)."""
     geom = body.add_geom()
     geom.type = geom_spec.type
     geom.size = geom_spec.size
@@ -108,14 +136,14 @@ def add_geometry(body: mujoco.MjsBody, node: Node, frame: Frame, ctx: CompileCon
         # Not transparent: MuJoCo ray casts (generic distance sensors) skip geoms with alpha 0; group 3
         # keeps them hidden in the viewer anyway.
         geom.rgba = [0.9, 0.5, 0.1, 0.4]
-        return geom, _mass_props(geom_spec)
+        return geom
     geom.group = VISUAL_GROUP
     geom.contype, geom.conaffinity = 0, 0
     if rgba is not None:
         geom.rgba = rgba
     if material:
         geom.material = material
-    return geom, None
+    return geom
 
 
 def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,

@@ -31,6 +31,7 @@ import numpy as np
 
 from wbtc.compile import (
     appearance,
+    cad_shape,
     damping,
     device,
     geometry,
@@ -102,7 +103,9 @@ class BodyBuilder:
                 self.walk(end, body, frame, robot, dynamic)
         elif kind == "Propeller":
             propeller.add_propeller(self, node, body, frame, robot)
-        elif kind in ("CadShape", "Fluid", "Skin", "Muscle"):
+        elif kind == "CadShape":
+            self.ctx.cad_geoms.extend(cad_shape.add_cad_shape(node, body, frame, self.ctx))
+        elif kind in ("Fluid", "Skin", "Muscle"):
             self.ctx.warn(f"{kind} is not supported by wbtc yet; it is left out", node.span)
 
     def _billboard(self, node: Node, body: mujoco.MjsBody, frame: Frame, robot: RobotEntry | None,

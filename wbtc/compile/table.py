@@ -193,6 +193,8 @@ class DeviceTable:
     gps_wgs84: bool = False
     connectors: list[DeviceEntry] = field(default_factory=list)
     infrared: dict[str, float] = field(default_factory=dict)
+    # Compiled ids of CadShapes' geoms, which infra-red rays pass through (wbtc.compile.cad_shape).
+    cad_geoms: list[int] = field(default_factory=list)
     camera_light: dict[str, tuple[float, float]] = field(default_factory=dict)
     light_boost: dict[str, float] = field(default_factory=dict)
     # SpotLight and DirectionalLight `direction` fields as written, by light name (LightSensors read them so).

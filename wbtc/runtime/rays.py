@@ -76,8 +76,10 @@ class RayCaster:
     from plain floats (the same IEEE operations as numpy's, so the same distances to the bit).
     """
 
-    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    def __init__(self, model: mujoco.MjModel, data: mujoco.MjData, unseen: list[int] | None = None) -> None:
         self.model, self.data = model, data
+        # Visual geoms infra-red rays pass through: CadShapes' (Webots' rays only meet Shape nodes).
+        self._unseen = frozenset(unseen or ())
         self.visual = np.zeros(6, dtype=np.uint8)
         self.visual[VISUAL_GROUP] = 1
         self.collision = np.zeros(6, dtype=np.uint8)
@@ -133,9 +135,10 @@ class RayCaster:
             geom = int(found[0])
             # ndarray.dot: the same BLAS dot product as `@`, with less overhead.
             back = front_only and float(normal.dot(direction)) > 0.0
-            if body[geom] not in skip_bodies and not back:
+            if body[geom] not in skip_bodies and not back and not (visual and geom in self._unseen):
                 return travelled + dist, geom
-            # Another part of the robot (a wheel), or a surface seen from behind: continue just past it
+            # Another part of the robot (a wheel), a surface seen from behind, or a CadShape for an
+            # infra-red ray: continue just past it
             # (point + direction · step, element by element as numpy would).
             step = dist + 1e-6
             travelled += step

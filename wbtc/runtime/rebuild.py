@@ -58,7 +58,7 @@ def swap_model(sim: Simulation, result: CompileResult, keep_time: bool = True, b
     names = {model.body(b).name: b for b in range(model.nbody)}
     sim.kinematic = {names[old_model.body(b).name]: v for b, v in sim.kinematic.items()
                      if old_model.body(b).name in names}
-    sim.rays = RayCaster(model, data)
+    sim.rays = RayCaster(model, data, result.table.cad_geoms)
     sim.texture_versions = {}  # the new model's textures are as compiled; displays write theirs again
     sim.canvases = {}  # and pens' ink is gone with the old model's textures
     sim.surface = SurfaceColours(model, result.table.infrared, sim.canvases)

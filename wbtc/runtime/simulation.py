@@ -89,7 +89,7 @@ class Simulation:
         self.seed = max(int(self.table.random_seed if seed is None else seed), 0)
         self.rng = np.random.default_rng(self.seed)
         self.noise_rng = self.rng if noise else None
-        self.rays = RayCaster(self.model, self.data)
+        self.rays = RayCaster(self.model, self.data, self.table.cad_geoms)
         self.canvases: dict[int, Any] = {}  # textures pens painted: tex id -> its Canvas (runtime.pen)
         self.texture_versions: dict[int, int] = {}  # textures rewritten during the run (Displays): tex id -> count
         # What infra-red rays see where they land (pens' ink included).
