@@ -1,9 +1,14 @@
 """Shared test helpers: where the shared corpus and lessons are."""
 
 import atexit
+import contextlib
+import functools
+import http.server
 import os
 import shutil
 import tempfile
+import threading
+from collections.abc import Iterator
 from pathlib import Path
 
 import wbtc  # noqa: F401  (picks headless OpenGL before any test module imports MuJoCo)
@@ -56,3 +61,25 @@ def project_with_controller(folder: Path, world: str, world_text: str, controlle
     path = folder / "worlds" / world
     path.write_text(world_text, encoding="utf-8")
     return path
+
+
+@contextlib.contextmanager
+def serving(folder: Path) -> Iterator[tuple[int, list[str]]]:
+    """An HTTP server on 127.0.0.1 serving `folder`: (its port, the paths asked for, in order)."""
+    asked: list[str] = []
+
+    class Handler(http.server.SimpleHTTPRequestHandler):
+        def do_GET(self) -> None:  # noqa: N802 - the name http.server calls
+            asked.append(self.path)
+            super().do_GET()
+
+        def log_message(self, *args: object) -> None:
+            pass
+
+    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Handler, directory=str(folder)))
+    threading.Thread(target=httpd.serve_forever, daemon=True).start()
+    try:
+        yield httpd.server_port, asked
+    finally:
+        httpd.shutdown()
+        httpd.server_close()

@@ -7,10 +7,7 @@ file is missing, in a Solid whose mass comes from its 0.1 m Box bounding object 
 
 from __future__ import annotations
 
-import functools
-import http.server
 import shutil
-import threading
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -18,6 +15,7 @@ import mujoco
 import numpy as np
 import pytest
 
+from tests.conftest import serving
 from wbtc.compile import remote
 from wbtc.compile.cad_files import clear_cad_cache, read_mtl
 from wbtc.compile.cad_shape import companion
@@ -272,29 +270,14 @@ def site(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Iterator[tuple[Path
     """`webots://` served by an HTTP server on 127.0.0.1 from `tmp_path/site/R2025a`, an empty asset cache."""
     root = tmp_path / "site"
     (root / "R2025a").mkdir(parents=True)
-    asked: list[str] = []
-
-    class Handler(http.server.SimpleHTTPRequestHandler):
-        def do_GET(self) -> None:  # noqa: N802 - the name http.server calls
-            asked.append(self.path)
-            super().do_GET()
-
-        def log_message(self, *args: object) -> None:
-            pass
-
-    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Handler, directory=str(root)))
-    threading.Thread(target=httpd.serve_forever, daemon=True).start()
     monkeypatch.delenv("WBTC_OFFLINE", raising=False)
     monkeypatch.delenv("WEBOTS_HOME", raising=False)
     monkeypatch.setenv("WBTC_ASSET_CACHE", str(tmp_path / "cache"))
-    monkeypatch.setenv("WBTC_WEBOTS_URL", f"http://127.0.0.1:{httpd.server_port}/R2025a/")
     monkeypatch.setattr(remote, "_FAILED", {})
     monkeypatch.setattr(remote, "_UNREACHABLE", [])
-    try:
+    with serving(root) as (port, asked):
+        monkeypatch.setenv("WBTC_WEBOTS_URL", f"http://127.0.0.1:{port}/R2025a/")
         yield root / "R2025a", asked
-    finally:
-        httpd.shutdown()
-        httpd.server_close()
 
 
 def test_remote_obj_fetches_its_mtl_and_texture_from_beside_it(tmp_path: Path, site) -> None:

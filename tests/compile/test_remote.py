@@ -5,15 +5,12 @@ Downloads go to a real HTTP server on this machine, standing for raw.githubuserc
 
 from __future__ import annotations
 
-import functools
-import http.server
-import threading
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
-from tests.conftest import simulation_of
+from tests.conftest import serving, simulation_of
 from wbtc.compile import remote
 
 PNG_RED = bytes.fromhex(
@@ -27,24 +24,8 @@ def server(tmp_path: Path) -> Iterator[tuple[str, Path, list[str]]]:
     """An HTTP server on 127.0.0.1 serving `tmp_path/site`: (base URL, its folder, the paths asked for)."""
     site = tmp_path / "site"
     site.mkdir()
-    asked: list[str] = []
-
-    class Handler(http.server.SimpleHTTPRequestHandler):
-        def do_GET(self) -> None:  # noqa: N802 - the name http.server calls
-            asked.append(self.path)
-            super().do_GET()
-
-        def log_message(self, *args: object) -> None:
-            pass
-
-    httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Handler, directory=str(site)))
-    thread = threading.Thread(target=httpd.serve_forever, daemon=True)
-    thread.start()
-    try:
-        yield f"http://127.0.0.1:{httpd.server_port}/R2025a/", site, asked
-    finally:
-        httpd.shutdown()
-        httpd.server_close()
+    with serving(site) as (port, asked):
+        yield f"http://127.0.0.1:{port}/R2025a/", site, asked
 
 
 @pytest.fixture
