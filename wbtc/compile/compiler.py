@@ -22,6 +22,7 @@ from wbtc.compile import (
     joint_stops,
     recovery,
     soft_contact,
+    static_links,
     still_joints,
     world,
 )
@@ -64,6 +65,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
             world.add_background(node, ctx)
         elif kind not in _SCENE_ONLY:
             builder.walk(node, spec.worldbody, root, None, False)
+    static_links.exclude_static_links(spec, _moves)  # before the friction pairs, which excludes do not stop
     world.apply_friction(info_node, ctx)
     world.set_ambient(_first(scene, "Background"), ctx)
     if options.strict and ctx.warnings:
