@@ -3,9 +3,8 @@
 import shutil
 from pathlib import Path
 
-from wbtc.pipeline import compile_world
+from tests.conftest import simulation_of
 from wbtc.runtime.commands import apply_commands
-from wbtc.runtime.simulation import Simulation
 
 MESHES = Path(__file__).parents[1] / "compile" / "fixtures" / "meshes"
 
@@ -39,9 +38,7 @@ Robot {{
 def _reading(tmp_path: Path, cad: str) -> float:
     for name in ("cad_parts.obj", "cad_parts.mtl"):
         shutil.copy(MESHES / name, tmp_path / name)
-    world = tmp_path / "ir.wbt"
-    world.write_text(_WORLD.format(cad=cad))
-    sim = Simulation(compile_world(world)[0], noise=False)
+    sim = simulation_of(tmp_path, _WORLD.format(cad=cad), "ir.wbt")
     robot = sim.robots[0]
     apply_commands(sim, robot, [(0, "enable", 32)])
     sim.step()

@@ -10,7 +10,7 @@ from pathlib import Path
 import mujoco
 import pytest
 
-from wbtc.pipeline import compile_world
+from tests.conftest import simulation_of
 from wbtc.runtime.simulation import Simulation
 
 #: A motor turning a 4e-8 kg m² gear that carries a 0.16 kg pendulum on a hinge free within +-0.1 rad
@@ -49,10 +49,7 @@ PENDULUM_INERTIA = 0.16 * (0.02**2 + 0.4**2) / 12 + 0.16 * 0.2**2
 
 @pytest.fixture
 def rig(tmp_path: Path):
-    path = tmp_path / "backlash.wbt"
-    path.write_text(WORLD, encoding="utf-8")
-    result, _ = compile_world(path)
-    sim = Simulation(result, noise=False)
+    sim = simulation_of(tmp_path, WORLD, "backlash.wbt")
     (motor,) = sim.robots[0].motors.values()
     motor.apply("setPosition", (math.inf,))
     motor.apply("setVelocity", (0.2,))

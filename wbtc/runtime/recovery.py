@@ -46,18 +46,19 @@ class Recovery:
     def find(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """Add the pairs that overlap now (the poses as they are; contacts found again)."""
         mujoco.mj_collision(model, data)
-        self.pairs |= {pair for pair, depth in _deepest(data).items() if depth < -DEEP}
+        self.pairs |= {pair for pair, depth in _deepest(_pair_keys(data), data).items() if depth < -DEEP}
 
     def hook(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """After `mj_step1`: cap the rows of the overlapping pairs' deep contacts; drop the pairs that are out."""
-        deepest = _deepest(data)
+        keys = _pair_keys(data)
+        deepest = _deepest(keys, data)
         self.pairs = {pair for pair in self.pairs if deepest.get(pair, 0.0) < -DEEP}
         if not self.pairs:
             return
         contacts = data.contact
         rows = contacts.efc_address
         first, second = self.classes[contacts.geom[:, 0]], self.classes[contacts.geom[:, 1]]
-        placed = np.array([(min(a, b), max(a, b)) in self.pairs for a, b in contacts.geom.tolist()])
+        placed = np.array([key in self.pairs for key in keys], dtype=bool)
         chosen = placed & (contacts.dist < -DEEP) & (rows >= 0) & (first >= 0) & (second >= 0)
         if not chosen.any():
             return
@@ -74,11 +75,17 @@ def recovery_for(table: RecoveryTable | None, model: mujoco.MjModel) -> Recovery
     return Recovery(table, model)
 
 
-def _deepest(data: mujoco.MjData) -> dict[tuple[int, int], float]:
-    """The deepest contact distance of each touching pair of geoms (lower id first)."""
+def _pair_keys(data: mujoco.MjData) -> list[tuple[int, int]]:
+    """Each contact's pair of geoms, lower id first."""
+    if not data.ncon:
+        return []
+    return [(a, b) if a < b else (b, a) for a, b in data.contact.geom.tolist()]
+
+
+def _deepest(keys: list[tuple[int, int]], data: mujoco.MjData) -> dict[tuple[int, int], float]:
+    """The deepest contact distance of each touching pair of geoms (`keys`: each contact's pair)."""
     deepest: dict[tuple[int, int], float] = {}
-    if data.ncon:
-        for (a, b), dist in zip(data.contact.geom.tolist(), data.contact.dist.tolist(), strict=True):
-            pair = (a, b) if a < b else (b, a)
+    if keys:
+        for pair, dist in zip(keys, data.contact.dist.tolist(), strict=True):
             deepest[pair] = min(dist, deepest.get(pair, 0.0))
     return deepest
