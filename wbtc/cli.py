@@ -136,9 +136,14 @@ def run(
     import_mujoco_without_gl()  # a run without cameras never loads OpenGL
     from wbtc.runtime.launch import launch
 
-    code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,
-                                 json_output=json_output, trace=trace, keys=keys, physics_step=physics_step,
-                                 ode_contacts=ode_contacts, noise=not no_noise, warn=_print_diagnostics, record=record))
+    try:
+        code = _guard(lambda: launch(world, duration=duration, headless=headless, realtime=realtime, seed=seed,
+                                     json_output=json_output, trace=trace, keys=keys, physics_step=physics_step,
+                                     ode_contacts=ode_contacts, noise=not no_noise, warn=_print_diagnostics,
+                                     record=record))
+    except KeyboardInterrupt as stop:  # a second Ctrl-C or SIGTERM, or one before the world steps
+        typer.echo("\nwbtc run: stopped at once; no video, page or trace of this run was kept", err=True)
+        raise typer.Exit(128 + getattr(stop, "signal", 2)) from None  # wbtc.runtime.interrupt.Stopped
     raise typer.Exit(code)
 
 

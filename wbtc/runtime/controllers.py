@@ -139,9 +139,11 @@ class ControllerProcess:
         print(f"wbtc: robot \"{robot_name}\" waits for its extern controller; start it with\n"
               f"  WBTC_CONTROLLER_URL=unix:{path} PYTHONPATH={child_path()} python YOUR_CONTROLLER.py",
               file=sys.stderr, flush=True)
-        sock, _ = server.accept()
-        server.close()
-        path.unlink(missing_ok=True)
+        try:
+            sock, _ = server.accept()
+        finally:  # also when the wait is interrupted: no socket file is left behind in the temp folder
+            server.close()
+            path.unlink(missing_ok=True)
         recv_frame(sock)  # ("hello", name)
         return cls(robot_name, sock, None, "<extern>")
 

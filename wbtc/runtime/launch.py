@@ -5,7 +5,8 @@ Viewpoint in real time, with Webots' simulation keys (pause, step, fast, reset, 
 window is closed or `--duration` has passed; other keys reach the robots' Keyboard devices.
 Headless, a progress bar shows on a terminal and a summary (or `--json`) ends the run.
 `--record FILE` films the Viewpoint (`record`), or writes an animation page for a FILE.html
-(`animation`).
+(`animation`). Ctrl-C or SIGTERM ends the run after the step in progress, with every output
+written (`interrupt`); a second one stops at once and keeps no half-written file.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 from wbtc.compile.context import CompileOptions
 from wbtc.errors import Diagnostic
+from wbtc.runtime.interrupt import StopSignals
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
@@ -100,23 +102,30 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     hooks = [window.sync] if window is not None else []
     hooks += [recorder] if recorder is not None else []
     trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
+    complete = False
     try:
-        # The window paces the run itself (its fast mode turns pacing off) and runs until it is closed.
-        options = RunOptions(duration=duration, realtime=realtime and window is None, keys=key_script,
-                             trace=TraceWriter(trace_file) if trace_file else None,
-                             on_step=_chain(hooks) if hooks else None, until_stopped=window is not None,
-                             progress=window is None and sys.stderr.isatty() and not json_output)
-        outcome = run(sim, world, options, hub)
-        if hub is not None:
-            hub.close_recordings()  # a movie or an animation never stopped ends with the run
-        if recorder is not None:
-            recorder.close()
-            recorder = None
+        with StopSignals() as signals:
+            # The window paces the run itself (its fast mode turns pacing off) and runs until it is closed.
+            options = RunOptions(duration=duration, realtime=realtime and window is None, keys=key_script,
+                                 trace=TraceWriter(trace_file) if trace_file else None,
+                                 on_step=_chain(hooks) if hooks else None, until_stopped=window is not None,
+                                 progress=window is None and sys.stderr.isatty() and not json_output,
+                                 signals=signals)
+            outcome = run(sim, world, options, hub)
+            signals.armed = False  # from here a signal stops at once: the files below are being finished
+            if hub is not None:
+                hub.close_recordings()  # a movie or an animation never stopped ends with the run
+            if recorder is not None:
+                recorder.close()
+                recorder = None
+            complete = True
     finally:
-        if recorder is not None:  # the run failed: no half-written video
+        if recorder is not None:  # the run failed or was stopped at once: no half-written video
             recorder.abort()
         if trace_file:
             trace_file.close()
+            if not complete and trace is not None:  # nor a trace cut in the middle of a row
+                trace.unlink(missing_ok=True)
         if window is not None:
             window.close()
         sim.close()
@@ -124,6 +133,8 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
         print(json.dumps(outcome.to_json()))
     else:
         print(summary(outcome))
+    if signals.received is not None:  # the shell's code for a run ended by Ctrl-C (130) or SIGTERM (143)
+        return signals.exit_code() or 1
     # simulationQuit(status) makes `wbtc run` exit with that status, as Webots does.
     return outcome.quit_status if outcome.quit_status is not None else 0
 

@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 from wbtc.runtime import commands
 from wbtc.runtime.controllers import NO_CONTROLLER, ControllerProcess, Substitutions, find_controller
+from wbtc.runtime.interrupt import StopSignals
 from wbtc.runtime.simulation import RobotState, Simulation
 
 if TYPE_CHECKING:  # the supervisor's modules (PROTO expansion, the compiler) load only with a supervisor
@@ -50,6 +51,7 @@ class RunOptions:
     progress: bool = False
     stop_reason: Callable[[], str] = lambda: "window closed"  # the end reason when on_step stops the run
     until_stopped: bool = False  # without a duration: run until on_step stops it (a window is closed)
+    signals: StopSignals | None = None  # Ctrl-C / SIGTERM end the run after the step (wbtc.runtime.interrupt)
 
 
 @dataclass
@@ -203,7 +205,23 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
     pace.set(options.realtime, sim.time)
     if hub is not None:
         hub.mode = MODE_REAL_TIME if options.realtime else MODE_FAST
-    links = [start_link(sim, robot, world, hub) for robot in sim.robots]
+    links: list[Link] = []
+    try:
+        for robot in sim.robots:
+            links.append(start_link(sim, robot, world, hub))
+        return _loop(sim, world, options, hub, links, start, pace)
+    except KeyboardInterrupt:  # stopped at once (wbtc.runtime.interrupt): no controller outlives the run
+        for link in links:
+            if link.process is not None:
+                link.process.finish(timeout=0.0)
+        raise
+
+
+def _loop(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | None, links: list[Link],
+          start: float, pace: _Pace) -> RunOutcome:
+    signals = options.signals
+    if signals is not None:
+        signals.armed = True
     limit_ms = (options.duration if options.duration is not None else DEFAULT_LIMIT_S) * 1000.0
     if options.duration is None and options.until_stopped:
         limit_ms = math.inf
@@ -212,8 +230,12 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
     rest_ends = options.duration is None and not options.until_stopped  # at rest, a headless run is over
     last_progress = 0.0
     while sim.time_ms + 1e-9 < limit_ms:
+        if signals is not None and signals.received is not None:  # it came while controllers computed
+            reason = signals.reason()
+            break
         if hub is not None:
-            links, shift = _flush(sim, world, hub, links)
+            followed, shift = _flush(sim, world, hub, links)
+            links[:] = followed  # in place: run() stops every controller of this list if interrupted at once
             limit_ms -= shift  # a reset moved the clock back: the run still lasts `duration` in all
             if hub.quit_status is not None:
                 reason = f"simulationQuit({hub.quit_status})"
@@ -249,6 +271,9 @@ def run(sim: Simulation, world: Path, options: RunOptions, hub: SupervisorHub | 
             if options.on_step and not options.on_step(sim):
                 limit_ms = sim.time_ms
                 reason = options.stop_reason()
+            if signals is not None and signals.received is not None:
+                limit_ms = sim.time_ms
+                reason = signals.reason()
             if pace.on:
                 pace.wait(sim.time)
             if options.progress and time.perf_counter() - last_progress > 0.2:

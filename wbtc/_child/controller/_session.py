@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import atexit
 import math
+import os
 import sys
 
 from .wire import Wire, WireClosed
@@ -348,4 +349,22 @@ def start() -> Session:
         sys.exit(1)
     _current = Session(wire, init)
     atexit.register(_current.cleanup)
+    if "WBTC_CONTROLLER_FD" in os.environ:
+        _leave_ctrl_c_to_the_simulator()
     return _current
+
+
+def _leave_ctrl_c_to_the_simulator() -> None:
+    """Ignore the terminal's Ctrl-C in a controller `wbtc run` started: the run ends it through step() = -1.
+
+    The terminal sends SIGINT to wbtc and its controllers alike (one process group, so that a batch's
+    time-out still kills both). wbtc then finishes the step and answers -1, as Webots does when it quits;
+    a KeyboardInterrupt here would end the controller mid-step with a traceback instead. Extern
+    controllers, started by hand, keep Ctrl-C.
+    """
+    import signal
+
+    try:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except ValueError:  # Robot() made outside the main thread: signals belong to the main thread only
+        pass
