@@ -160,10 +160,7 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if robot.battery is not None and robot.battery.value is not None:
         message["battery"] = robot.battery.value
         robot.battery.value = None
-    dead = getattr(sim.tree, "dead_fields", None)
-    if dead and robot.dead_seen < len(dead):  # field refs a PROTO regeneration invalidated, once per robot
-        message["dead_fields"] = dead[robot.dead_seen:]
-        robot.dead_seen = len(dead)
+    message.update(tree_news(sim, robot))
     if robot.supervisor_pushed is not None:
         message["supervisor"] = robot.supervisor_pushed
         robot.supervisor_pushed = None
@@ -174,6 +171,26 @@ def reply(sim: Simulation, robot: RobotState, status: int) -> dict[str, Any]:
     if new:
         message["new_devices"] = new
     return message
+
+
+def tree_news(sim: Simulation, robot: RobotState) -> dict[str, list[int]]:
+    """What the robot's controller has not been told yet of the scene tree: ids that name nothing any more.
+
+    `dead_fields`: field references a PROTO regeneration or a node's deletion invalidated; `dead_nodes`:
+    nodes deleted with a removed node (Webots' library drops them and getFromId answers None). Each is
+    told once per robot.
+    """
+    news: dict[str, list[int]] = {}
+    tree = getattr(sim, "tree", None)
+    if tree is None:
+        return news
+    if robot.dead_seen < len(tree.dead_fields):
+        news["dead_fields"] = tree.dead_fields[robot.dead_seen:]
+        robot.dead_seen = len(tree.dead_fields)
+    if robot.dead_nodes_seen < len(tree.dead_nodes):
+        news["dead_nodes"] = tree.dead_nodes[robot.dead_nodes_seen:]
+        robot.dead_nodes_seen = len(tree.dead_nodes)
+    return news
 
 
 def announce_devices(robot: RobotState) -> list[dict[str, Any]]:

@@ -108,6 +108,7 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
     else:  # the field changed (a regenerated PROTO writes its own): the controller reads the new value
         new.custom_data_pushed = True
     new.supervisor_pushed, new.dead_seen = old.supervisor_pushed, old.dead_seen
+    new.dead_nodes_seen = old.dead_nodes_seen
     new.announced = old.announced
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
     if keep_motion:

@@ -189,7 +189,9 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
         hub.flush()
         _catch_up(sim, link)
         # Webots' library sees devices imported into its own robot at once (getDevice right after the import).
-        return {"result": None, "new_devices": commands.announce_devices(link.robot)}
+        # It also learns at once of the nodes the flush deleted (a removed node's children name nothing).
+        return {"result": None, "new_devices": commands.announce_devices(link.robot),
+                **commands.tree_news(sim, link.robot)}
     from wbtc.runtime.supervisor import SupervisorError  # loaded with the hub already
 
     try:

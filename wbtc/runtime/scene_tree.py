@@ -59,6 +59,7 @@ class SceneTree:
         self.fields: list[FieldRef] = []
         self.field_keys: dict[tuple[int, str, int], int] = {}
         self.dead_fields: list[int] = []  # field ids a PROTO regeneration made invalid, in order
+        self.dead_nodes: list[int] = []  # ids of nodes deleted from the scene, in order (see `prune`)
         self._pose_links: dict[int, tuple[Node, str]] | None = None  # see `linked_pose`
         self.refresh()
 
@@ -86,6 +87,28 @@ class SceneTree:
                 self.ids[id(node)] = new
                 self.by_id[new] = node
             self.parents.setdefault(self.ids[id(node)], self.ids[id(parent)])
+
+    def prune(self) -> None:
+        """Forget the nodes no field holds any more (removed, or inside a removed or replaced node).
+
+        Webots deletes a removed node with everything inside it: their ids then name no node
+        (`getFromId` answers None) and references to their fields are invalid. The ids go to
+        `dead_nodes` and the fields to `dead_fields`, which each supervisor's controller is told of.
+        """
+        self.refresh()
+        gone = [node_id for node_id in self.by_id if node_id != ROOT_ID and node_id not in self.parents]
+        if not gone:
+            return
+        objects = set()
+        for node_id in gone:
+            node = self.by_id.pop(node_id)
+            self.ids.pop(id(node), None)
+            objects.add(id(node))
+            self.dead_nodes.append(node_id)
+        for ref in self.fields:
+            if id(ref.node) in objects and ref.id not in self.dead_fields:
+                self.dead_fields.append(ref.id)
+                self.field_keys.pop((id(ref.node), ref.name, ref.proto), None)
 
     def _edges(self, parent: Node, children: list, hidden: bool) -> Iterator[tuple[Node, Node]]:
         """(parent, child) pairs depth first, in file order; `hidden` also enters PROTO internals."""

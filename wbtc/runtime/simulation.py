@@ -66,6 +66,7 @@ class RobotState:
     battery: Battery | None = None
     supervisor_pushed: bool | None = None  # a supervisor wrote the robot's `supervisor` field: tell the controller
     dead_seen: int = 0  # how many of the scene tree's invalidated field ids this robot's controller knows
+    dead_nodes_seen: int = 0  # and how many of its deleted node ids
     distance: float = 0.0
     last_pos: list[float] = field(default_factory=list)
     belts: dict[str, Any] = field(default_factory=dict)  # its Tracks' belts by body (runtime.tracks)

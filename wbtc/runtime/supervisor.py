@@ -224,6 +224,8 @@ class SupervisorHub:
             outcome.restart += supervisor_world.recompile(self, dirty, self._regenerated)
             self._regenerated.clear()
             outcome.rebuilt = True
+        if dirty or outcome.reset:  # nodes removed, replaced, or (a reset) imported since the start are gone
+            self.tree.prune()
         self._follow()  # a regenerated Viewpoint follows on from where it is, before the next step
         changes = self.changes
         changes.rebuilt |= outcome.rebuilt

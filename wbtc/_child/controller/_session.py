@@ -183,14 +183,22 @@ class Session:
             self.battery_value = float(reply["battery"])
         if reply.get("supervisor") is not None:  # a supervisor wrote this robot's `supervisor` field
             self.supervisor = bool(reply["supervisor"])
-        for field_id in reply.get("dead_fields") or []:  # invalid after a PROTO regeneration: type 0
+        self._tree_news(reply)
+        if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
+            self.custom_data = str(reply["custom_data"])
+        self._new_devices(reply)
+
+    def _tree_news(self, reply: dict) -> None:
+        """Forget the fields and nodes the simulator says are gone (a PROTO regeneration, a removed node)."""
+        for field_id in reply.get("dead_fields") or []:  # invalid fields read as type 0
             for table in (self.fields, self.view_fields):
                 field = table.pop(int(field_id), None)
                 if field is not None:
                     field.type = 0
-        if reply.get("custom_data") is not None:  # a supervisor wrote the robot's customData field
-            self.custom_data = str(reply["custom_data"])
-        self._new_devices(reply)
+        for node_id in reply.get("dead_nodes") or []:  # deleted: the object is invalid, the id names nothing
+            node = self.nodes.pop(int(node_id), None)
+            if node is not None:
+                node._valid = False
 
     def _new_devices(self, reply: dict) -> None:
         """Devices a supervisor imported into this robot (in a step or flush reply) join the known ones."""
@@ -288,6 +296,7 @@ class Session:
         self.commands = []
         self._forget_pending()
         self._new_devices(reply)
+        self._tree_news(reply)
         return True
 
     def _forget_pending(self) -> None:
