@@ -33,10 +33,13 @@ class RecoveryTable:
         geom_class: per compiled geom, the index of its Solid's contactMaterial (-1: no collision).
         rate: (n, n) of two classes, −ln(1 − softERP) / basicTimeStep (1/s): the separating speed per
             metre of depth that takes out ODE's share of the depth per step.
+        cfm: (n, n) of two classes, their softCFM: how soft ODE's row is, which bounds the force it
+            pushes with (None: MuJoCo's own softness).
     """
 
     geom_class: np.ndarray
     rate: np.ndarray
+    cfm: np.ndarray | None = None
 
 
 def table(ctx: CompileContext, model: mujoco.MjModel) -> RecoveryTable:
@@ -47,4 +50,6 @@ def table(ctx: CompileContext, model: mujoco.MjModel) -> RecoveryTable:
     # continuous over the substeps, is exp(−rate·t) with rate = −ln(1 − ERP) / basicTimeStep.
     erp = np.array([[min(soft_contact.softness_of(ctx, a, b).erp, MAX_ERP) for b in materials] for a in materials])
     rate = -np.log1p(-np.maximum(erp, 0.0)) / basic
-    return RecoveryTable(geom_class, rate.reshape(len(materials), len(materials)))
+    cfm = np.array([[max(soft_contact.softness_of(ctx, a, b).cfm, 1e-10) for b in materials] for a in materials])
+    shape = (len(materials), len(materials))
+    return RecoveryTable(geom_class, rate.reshape(shape), cfm.reshape(shape))

@@ -10,7 +10,9 @@ recompiled (a regenerated bounding object, an imported node). While such a pair 
 basic step's substeps are split (wbtc.runtime.substeps) and each of its deep contacts' normal rows
 gets a_ref = min(a_ref, (rate × depth − v) / h), h the substep, v its normal speed (positive apart):
 the velocity change that takes it to ODE's speed within the substep, never more than MuJoCo's own.
-A pair leaves the set once it is no deeper than `DEEP`.
+A pair leaves the set once it is no deeper than `DEEP`. When both geoms belong to one kinematic
+tree (a robot's links, which joints may keep inside each other for good), the normal row also gets
+ODE's softness, R = softCFM / h (see `_soften`): a spring its motors can hold against.
 
 Impacts keep MuJoCo's row: its spring sends a ball back off a post much as Webots' default bounce
 does, where ODE's push-out speed would leave it stuck. So do resting contacts (0.03 mm deep for a
@@ -39,7 +41,9 @@ class Recovery:
     """
 
     def __init__(self, table: RecoveryTable, model: mujoco.MjModel) -> None:
-        self.classes, self.rate = table.geom_class, table.rate
+        self.classes, self.rate, self.cfm = table.geom_class, table.rate, table.cfm
+        # Each geom's kinematic tree (0: the static world): overlaps inside one tree may never resolve.
+        self.tree = model.body_rootid[model.geom_bodyid]
         self.model = model
         self.pairs: set[tuple[int, int]] = set()
 
@@ -63,9 +67,41 @@ class Recovery:
         if not chosen.any():
             return
         rows = rows[chosen]
-        target = self.rate[first[chosen], second[chosen]] * -contacts.dist[chosen]
-        wanted = (target - data.efc_vel[rows]) / model.opt.timestep
+        a, b = first[chosen], second[chosen]
+        h = model.opt.timestep
+        target = self.rate[a, b] * -contacts.dist[chosen]
+        wanted = (target - data.efc_vel[rows]) / h
         data.efc_aref[rows] = np.minimum(data.efc_aref[rows], wanted)
+        if self.cfm is not None:
+            first_tree, second_tree = self.tree[contacts.geom[chosen, 0]], self.tree[contacts.geom[chosen, 1]]
+            linked = (first_tree == second_tree) & (first_tree > 0)
+            _soften(data, rows[linked], self.cfm[a, b][linked] / h)
+
+
+
+def _soften(data: mujoco.MjData, rows: np.ndarray, soft: np.ndarray) -> None:
+    """Give the normal rows at `rows` ODE's regularisation R = softCFM / h where MuJoCo's is stiffer.
+
+    For the overlaps of two bodies of one kinematic tree (a robot's links), which may never resolve:
+    ODE's row is the implicit spring of its ERP and CFM (kp = ERP / (h·CFM) per point), so a row its
+    bodies cannot satisfy (a finger hinged 3 cm inside a palm, as Webots' own Robotiq 3F is) pushes
+    with (rate × depth − v) / CFM at most: a 100 N·m motor then holds its finger 0.025 rad from its
+    target, where MuJoCo's stiff row, asking the same speed with any force, opened it 0.28 rad. A free
+    body leaves its overlap at the capped speed whatever the softness. The friction rows stay MuJoCo's:
+    softened with it they let a box placed in a slope creep down it, and left stiff against a soft
+    normal row they buy friction with normal force (MuJoCo's convex cone): a box placed 4.5 cm in a
+    tilted plane stuck to it.
+    """
+    softer = soft > data.efc_R[rows]
+    rows, soft = rows[softer], soft[softer]
+    if not len(rows):
+        return
+    data.efc_R[rows] = soft
+    data.efc_D[rows] = 1.0 / soft
+    if data.nisland:  # the solver reads its islands' copies, made in mj_step1
+        at = data.map_efc2iefc[rows]
+        data.iefc_R[at] = soft
+        data.iefc_D[at] = 1.0 / soft
 
 
 def recovery_for(table: RecoveryTable | None, model: mujoco.MjModel) -> Recovery | None:
