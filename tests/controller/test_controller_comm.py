@@ -109,7 +109,8 @@ def test_receiver_queue(sim) -> None:
         print(json.dumps([receiver.getQueueLength(), receiver.getString(), receiver.getDataSize(),
                           receiver.getSignalStrength(), receiver.getEmitterDirection(), receiver.getBytes().hex()]))
         receiver.nextPacket()
-        print(json.dumps([receiver.getFloats(), receiver.getBytes().hex(), receiver.queue_length]))
+        print(json.dumps([receiver.getFloats(), receiver.getBytes().hex(), receiver.queue_length,
+                          bytes(receiver.data[0:receiver.data_size]).hex()]))
         receiver.nextPacket()
         print(json.dumps([receiver.getInts(), receiver.getData()]))
         receiver.nextPacket()
@@ -138,7 +139,7 @@ def test_receiver_queue(sim) -> None:
     assert lines[:2] == ["0", "0"]
     assert json_lines("\n".join(lines[2:])) == [
         [3, "hi", 2, 0.5, [1.0, 0.0, 0.0], "6869"],
-        [[1.0, 2.0], struct.pack("2d", 1.0, 2.0).hex(), 2],
+        [[1.0, 2.0], struct.pack("2d", 1.0, 2.0).hex(), 2, struct.pack("2d", 1.0, 2.0).hex()],
         [[7, 8], struct.pack("2i", 7, 8).decode()],
         [0, "", -1, []],
         2,

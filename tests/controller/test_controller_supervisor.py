@@ -642,6 +642,7 @@ def test_get_proto_climbs_the_chain_and_its_parameters_are_read_only_views(sim) 
         parent = proto.getProtoParent()
         print(proto.getTypeName(), proto.isDerived(), parent.type_name, parent.isDerived(), parent.getProtoParent())
         print(proto.getNumberOfParameters(), parent.number_of_parameters, isinstance(proto, Proto))
+        print(proto.is_derived, parent.is_derived, proto.getParent().getTypeName())
         proto.getParameter("radius").setSFFloat(0.2)
         parent.getParameterByIndex(0).setSFFloat(0.3)
         print(box.getProto(), proto.getParameter(""), proto.getParameterByIndex(-1))
@@ -662,7 +663,7 @@ def test_get_proto_climbs_the_chain_and_its_parameters_are_read_only_views(sim) 
     assert fake.step() == (32, [])
     rc, out, err = fake.finish()
     assert rc == 0
-    assert out.splitlines() == ["Ball True Sphere3 False None", "4 2 True", "None None None"]
+    assert out.splitlines() == ["Ball True Sphere3 False None", "4 2 True", "True False Sphere3", "None None None"]
     assert err.splitlines() == [
         "Error: wb_supervisor_field_set_sf_float() called on a read-only PROTO internal field.",
         "Error: wb_supervisor_field_set_sf_float() called on a read-only PROTO internal field.",

@@ -84,3 +84,4 @@ class Proto:
         return self.getNumberOfFields()
 
     number_of_parameters = number_of_fields
+    is_derived = property(isDerived, doc="Whether this PROTO's body is an instance of another PROTO.")

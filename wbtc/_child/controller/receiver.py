@@ -139,6 +139,8 @@ class Receiver(Sensor):
 
     queue_length = property(getQueueLength, doc="The number of packets waiting.")
     data_size = property(getDataSize, doc="The head packet's size.")
+    #: Webots' ``data`` is a ctypes byte pointer (``receiver.data[0:receiver.data_size]``); bytes slice alike.
+    data = property(getBytes, doc="The head packet's data as bytes.")
     string = property(getString, doc="The head packet as a str.")
     signal_strength = property(getSignalStrength, doc="The head packet's signal strength.")
     emitter_direction = property(getEmitterDirection, doc="The direction of the head packet's emitter.")
