@@ -1,8 +1,10 @@
 """Objects rest on the floor at Webots' heights: their collision shapes reach as far below their origin as Webots'."""
 
+import math
 from pathlib import Path
 
 import mujoco
+import numpy as np
 import pytest
 from conftest import simulation_of
 
@@ -49,5 +51,63 @@ OfficeChair { }
         assert model.dof_damping[model.jnt_dofadr[joint]] == pytest.approx(1.0)
         masses = sorted(round(float(m), 6) for m in model.body_mass if m > 0)
         assert masses == [3.0, 6.0]  # Webots' seat and base
+    finally:
+        sim.close()
+
+
+# Containers and furniture that others rest on or in: (the object, where Webots' bounding object puts the
+# upper face of its floor, bed or seat, and where on it a cube is set). The metal box's lowest corner
+# lies 0.17 mm below its origin (its end strips are turned 0.015 rad).
+HOLDERS = {
+    "MetalStorageBox": ("MetalStorageBox { translation 0 0 0.00017 mass 10 }", 0.004 + 0.00017, 0.0),
+    "PlasticCrate": ("PlasticCrate { mass 2 }", 0.021, 0.0),
+    "Bed": ("Bed { }", 0.65, 0.3),
+    "Sofa": ("Sofa { physics Physics { density -1 mass 30 } }", 0.45, 0.2),
+    "WoodenPallet": ("WoodenPallet { mass 20 }", 0.14, 0.0),
+    "WoodenPalletStack": ("WoodenPalletStack { palletMass 10 }", 1.12, 0.0),
+}
+
+
+@pytest.mark.parametrize("proto", sorted(HOLDERS))
+def test_a_cube_set_on_a_holder_at_webots_height_stays_there(tmp_path: Path, proto: str):
+    holder, top, x = HOLDERS[proto]
+    world = f"""#VRML_SIM R2025a utf8
+WorldInfo {{ basicTimeStep 16 }}
+Floor {{ size 4 4 }}
+DEF HOLDER {holder}
+DEF CUBE SolidBox {{ translation {x} 0 {top + 0.05} size 0.1 0.1 0.1 physics Physics {{ }} name "cube" }}
+"""
+    sim = simulation_of(tmp_path, world)
+    try:
+        mujoco.mj_forward(sim.model, sim.data)
+        bodies = [b for b in ("HOLDER", "CUBE") if sim.model.body(b).jntnum[0] > 0]
+        start = {b: sim.data.body(b).xpos.copy() for b in bodies}
+        while sim.time < 1.0:
+            sim.step()
+        for b in bodies:  # the cube fell or was pushed up by 1.1 to 12.5 cm when the shapes differed from Webots'
+            assert float(np.linalg.norm(sim.data.body(b).xpos - start[b])) < 3e-4, b
+    finally:
+        sim.close()
+
+
+def test_a_solid_pipe_lying_on_a_face_of_webots_ring_rests_at_its_apothem(tmp_path: Path):
+    # 24 boxes whose corners lie on the radius, the first centred 7.5 degrees from +x: the face centred
+    # at 277.5 degrees points down, radius * cos(7.5 degrees) below the axis.
+    z = 0.2 * math.cos(math.pi / 24)
+    world = f"""#VRML_SIM R2025a utf8
+WorldInfo {{ basicTimeStep 16 }}
+Floor {{ size 4 4 }}
+DEF PIPE SolidPipe {{
+  translation 0 0 {z} rotation 0.55046172 0.62768129 0.55046172 2.0205424349
+  radius 0.2 thickness 0.02 height 0.5 physics Physics {{ }}
+}}
+"""
+    sim = simulation_of(tmp_path, world)
+    try:
+        mujoco.mj_forward(sim.model, sim.data)
+        start = sim.data.body("PIPE").xpos.copy()
+        while sim.time < 1.0:
+            sim.step()
+        assert float(np.linalg.norm(sim.data.body("PIPE").xpos - start)) < 3e-4  # 3.4 mm up before
     finally:
         sim.close()
