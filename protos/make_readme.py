@@ -94,9 +94,9 @@ APPROXIMATIONS = """\
   Appearances give a mean colour multiplied by `colorOverride` (or `baseColor`/`color`), as Webots
   multiplies it with its texture.
 - Objects are static unless Webots gives them physics (a `mass`, `physics` or `density` field).
-- Webots joints are kept only where they matter for robots (Door leaf on its hinge). Cabinet doors and
-  drawers are closed static panels, OfficeChair does not swivel, DoorLever/LeverValve do not turn,
-  Laptop has no Display, Forest trees are visual only (at most 400).
+- Webots joints are kept only where they matter for robots (Door leaf on its hinge, Cabinet doors and
+  drawers, OfficeChair seat). DoorLever/LeverValve do not turn, Laptop has no Display, Forest trees are
+  visual only (at most 400).
 - Road/StraightRoadSegment/CurvedRoadSegment: own geometry (Catmull-Rom smoothing, dashed lines 3 m on /
   3 m off, barrier 0.3-0.75 m high); road tilt, start/end line textures and turn arrows are not drawn.
 - LegoWall: ENU layout inferred from the R2020a NUE file and from world usage (length along x).

@@ -57,8 +57,12 @@ OfficeChair { }
 
 # Containers and furniture that others rest on or in: (the object, where Webots' bounding object puts the
 # upper face of its floor, bed or seat, and where on it a cube is set). The metal box's lowest corner
-# lies 0.17 mm below its origin (its end strips are turned 0.015 rad).
+# lies 0.17 mm below its origin (its end strips are turned 0.015 rad); the wooden chair's legs end 0.44 mm
+# above its origin.
 HOLDERS = {
+    "Chair": ("Chair { physics Physics { density 300 } }", 0.5, 0.0),
+    "WoodenChair": ("WoodenChair { translation 0 0 -0.00044 physics Physics { density 300 } }", 0.482 - 0.00044, 0.0),
+    "Armchair": ("Armchair { physics Physics { density 100 } }", 0.45, 0.1),
     "MetalStorageBox": ("MetalStorageBox { translation 0 0 0.00017 mass 10 }", 0.004 + 0.00017, 0.0),
     "PlasticCrate": ("PlasticCrate { mass 2 }", 0.021, 0.0),
     "Bed": ("Bed { }", 0.65, 0.3),
@@ -85,6 +89,7 @@ DEF CUBE SolidBox {{ translation {x} 0 {top + 0.05} size 0.1 0.1 0.1 physics Phy
         while sim.time < 1.0:
             sim.step()
         for b in bodies:  # the cube fell or was pushed up by 1.1 to 12.5 cm when the shapes differed from Webots'
+            # (onto Chair's, WoodenChair's and Armchair's seats: 4.0, 3.2 and 3.0 cm)
             assert float(np.linalg.norm(sim.data.body(b).xpos - start[b])) < 3e-4, b
     finally:
         sim.close()
@@ -109,5 +114,40 @@ DEF PIPE SolidPipe {{
         while sim.time < 1.0:
             sim.step()
         assert float(np.linalg.norm(sim.data.body("PIPE").xpos - start)) < 3e-4  # 3.4 mm up before
+    finally:
+        sim.close()
+
+
+def test_cabinet_doors_turn_and_drawers_slide_as_in_webots(tmp_path: Path):
+    world = """#VRML_SIM R2025a utf8
+WorldInfo { basicTimeStep 16 }
+Floor { size 4 4 }
+Cabinet { }
+"""
+    sim = simulation_of(tmp_path, world)
+    try:
+        model, data = sim.model, sim.data
+        hinges = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE]
+        sliders = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE]
+        assert len(hinges) == 2 and len(sliders) == 4  # the default layout's two doors and four drawers (none before)
+        ranges = sorted(tuple(round(float(v), 2) for v in model.jnt_range[j]) for j in hinges)
+        assert ranges == [(-1.57, 0.01), (-0.01, 1.57)]  # each door opens outwards, away from its hinge side
+        assert all(model.dof_damping[model.jnt_dofadr[j]] == pytest.approx(5.0) for j in hinges + sliders)
+        masses = sorted(round(float(model.body_subtreemass[model.jnt_bodyid[j]]), 4) for j in hinges + sliders)
+        assert masses == [1.81, 1.81, 1.85, 1.85, 1.85, 3.85]  # 1.5 or 3.5 kg, the parts' 10 g, the 0.3 kg handle
+        mujoco.mj_forward(model, data)
+        assert data.ncon == 0  # nothing touches: doors and drawers clear the frame and the shelves
+        start = data.qpos.copy()
+        while sim.time < 0.5:
+            sim.step()
+        assert abs(data.qpos - start).max() < 1e-6  # closed, they stay closed
+        while sim.time < 1.5:  # pull every door and drawer outwards
+            for j in hinges:
+                data.qfrc_applied[model.jnt_dofadr[j]] = 2.0 if model.jnt_range[j][1] > 1 else -2.0
+            for j in sliders:
+                data.qfrc_applied[model.jnt_dofadr[j]] = 5.0
+            sim.step()
+        opened = [abs(float(data.qpos[model.jnt_qposadr[j]])) for j in hinges + sliders]
+        assert all(o > 0.19 for o in opened)  # doors swing wide open, drawers come out to their stops
     finally:
         sim.close()
