@@ -134,14 +134,15 @@ class ControllerProcess:
         path = Path(tempfile.gettempdir()) / f"wbtc-{os.getpid()}-{abs(hash(robot_name)) % 10**8}.sock"
         path.unlink(missing_ok=True)
         server = socket.socket(socket.AF_UNIX, socket.SOCK_STREAM)
-        server.bind(str(path))
-        server.listen(1)
-        print(f"wbtc: robot \"{robot_name}\" waits for its extern controller; start it with\n"
-              f"  WBTC_CONTROLLER_URL=unix:{path} PYTHONPATH={child_path()} python YOUR_CONTROLLER.py",
-              file=sys.stderr, flush=True)
+        # Also when the wait is interrupted (even before accept): no socket file is left in the temp folder.
         try:
+            server.bind(str(path))
+            server.listen(1)
+            print(f"wbtc: robot \"{robot_name}\" waits for its extern controller; start it with\n"
+                  f"  WBTC_CONTROLLER_URL=unix:{path} PYTHONPATH={child_path()} python YOUR_CONTROLLER.py",
+                  file=sys.stderr, flush=True)
             sock, _ = server.accept()
-        finally:  # also when the wait is interrupted: no socket file is left behind in the temp folder
+        finally:
             server.close()
             path.unlink(missing_ok=True)
         recv_frame(sock)  # ("hello", name)
