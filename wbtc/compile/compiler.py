@@ -19,6 +19,7 @@ from wbtc.compile import (
     damping,
     device,
     hfield_refine,
+    hinge_chains,
     joint_stops,
     recovery,
     soft_contact,
@@ -66,6 +67,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
         elif kind not in _SCENE_ONLY:
             builder.walk(node, spec.worldbody, root, None, False)
     static_links.exclude_static_links(spec, _moves)  # before the friction pairs, which excludes do not stop
+    hinge_chains.exclude_hinge_chains(spec, ctx.hinge_anchors, _moves)
     world.apply_friction(info_node, ctx)
     world.set_ambient(_first(scene, "Background"), ctx)
     if options.strict and ctx.warnings:

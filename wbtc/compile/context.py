@@ -56,6 +56,9 @@ class CompileContext:
     cad_geoms: list[mujoco.MjsGeom] = field(default_factory=list)
     default_damping: Node | None = None
     damped: list[tuple[str, float, float]] = field(default_factory=list)  # free joint, linear and angular rates
+    # The `anchor` field of the HingeJoint, Hinge2Joint or BallJoint above each endPoint body, as written
+    # (in its parent's frame), by body name: Webots' hinge-chain collision skip (wbtc.compile.hinge_chains).
+    hinge_anchors: dict[str, tuple[float, float, float]] = field(default_factory=dict)
     texture_paths: dict[str, str] = field(default_factory=dict)
     display_textures: dict[int, object] = field(default_factory=dict)  # id(ImageTexture) -> its Display's entry
     led_lights: list[tuple[str, float, float]] | None = None  # collects an LED's lights while its children are walked

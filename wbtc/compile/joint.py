@@ -137,6 +137,9 @@ def _add_joints(builder: BodyBuilder, node: Node, kind: str, child: mujoco.MjsBo
                                     dtype=float))
     if kind == "SliderJoint":
         anchor = child_pose.pos  # a slider has no anchor: put the joint at the endPoint's origin
+    else:
+        raw = param(first, first_type, "anchor")
+        ctx.hinge_anchors[child.name] = (float(raw[0]), float(raw[1]), float(raw[2]))
     if kind == "BallJoint" and not any(node.get(f) for f in ("device", "device2", "device3")):
         _make(child, node, ctx, mujoco.mjtJoint.mjJNT_BALL, child_pose, anchor, None, first, first_type)
         return 0

@@ -15,8 +15,8 @@ Webots), gets an explicit `exclude` with every body welded to the world, without
 collision geoms. A Solid with Physics fixed to a static parent (a TouchSensor on a static robot) has
 an ODE body in Webots and is still touched.
 
-Not honoured yet: Webots' other skip, bodies connected through a chain of HingeJoints sharing one
-anchor.
+Webots' other skip, bodies linked through a chain of hinges sharing one anchor, is
+wbtc.compile.hinge_chains.
 """
 
 from __future__ import annotations
