@@ -100,8 +100,8 @@ APPROXIMATIONS = """\
 - Road/StraightRoadSegment/CurvedRoadSegment: own geometry (Catmull-Rom smoothing, dashed lines 3 m on /
   3 m off, barrier 0.3-0.75 m high); road tilt, start/end line textures and turn arrows are not drawn.
 - LegoWall: ENU layout inferred from the R2020a NUE file and from world usage (length along x).
-- Ceiling default rotation (`0 1 0 3.14159`), Book/Apple/Orange default translations, light fixtures
-  (PointLight/SpotLight attenuation `0 0 1`, positions) are our choices.
+- Ceiling default rotation (`0 1 0 3.14159`), Book's default translation, light fixtures (PointLight/SpotLight
+  attenuation `0 0 1`, positions) are our choices.
 - UnevenTerrain reproduces Webots' noise recipe and random generator, so heights should match Webots for
   the same `randomSeed`; not compared against a Webots run.
 - Erebus rescue maze (worldTile, halfTile, Victim, HazardMap): y-up layout as in Erebus' NUE worlds, tile

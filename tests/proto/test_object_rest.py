@@ -8,13 +8,18 @@ import numpy as np
 import pytest
 from conftest import simulation_of
 
+from wbtc.pipeline import compile_world
+
 # Where each object's origin rests on a floor at z = 0, from the lowest point of Webots' bounding objects:
 # the chair's casters (radius 0.027 m, axles 0.027 m up), the hammer's handle and head (13.5 mm below its
-# axis), the screwdriver's handle (radius 0.012 m), the paint bucket's bottom disc (1.2 mm above its origin).
-REST = {"OfficeChair": 0.0, "Hammer": 0.0135, "Screwdriver": 0.012, "PaintBucket": -0.0012}
+# axis), the screwdriver's handle (radius 0.012 m), the paint bucket's bottom disc (1.2 mm above its origin),
+# the apple's and the orange's spheres (radius 0.05 m: their default translation), the rubber duck's bottom
+# plate (20.5 mm below its origin), the can's cylinder (half its 0.1222 m), the soccer ball's sphere.
+REST = {"OfficeChair": 0.0, "Hammer": 0.0135, "Screwdriver": 0.012, "PaintBucket": -0.0012, "Apple": 0.05,
+        "Orange": 0.05, "RubberDuck": 0.0205, "Can": 0.0611, "SoccerBall": 0.113}
 # How far each may settle: the hammer touches the floor with the lowest of its head's boxes alone and
 # tips onto its handle (radius 0.0121 m), 0.8 mm lower; the others rest on their lowest points.
-SETTLE = {"OfficeChair": 3e-4, "Hammer": 1e-3, "Screwdriver": 3e-4, "PaintBucket": 3e-4}
+SETTLE = {"Hammer": 1e-3}
 
 
 def _moved(tmp_path: Path, world: str, bodies: list[str]) -> dict[str, np.ndarray]:
@@ -39,7 +44,8 @@ Floor {{ size 4 4 }}
 DEF OBJECT {proto} {{ translation 0 0 {REST[proto]} name "object" }}
 """
     moved = _moved(tmp_path, world, ["OBJECT"])["OBJECT"]
-    assert abs(float(moved[2])) < SETTLE[proto]  # was up to 2 cm (the chair fell)
+    # was up to 2 cm (the chair fell; the apple and the orange fell 25 mm, the duck's spheres rose 7 mm)
+    assert abs(float(moved[2])) < SETTLE.get(proto, 3e-4)
 
 
 def test_the_office_chair_seat_swivels_on_its_base(tmp_path: Path):
@@ -76,6 +82,9 @@ HOLDERS = {
     "Sofa": ("Sofa { physics Physics { density -1 mass 30 } }", 0.45, 0.2),
     "WoodenPallet": ("WoodenPallet { mass 20 }", 0.14, 0.0),
     "WoodenPalletStack": ("WoodenPalletStack { palletMass 10 }", 1.12, 0.0),
+    "FruitBowl": ("FruitBowl { }", 0.01, 0.0),
+    "StraightStairs": ("StraightStairs { }", 0.15, -0.1),  # on the first tread, centred on the origin
+    "StraightStairs, under its first tread": ("StraightStairs { }", 0.0, 0.0),  # the risers are open
 }
 
 
@@ -91,7 +100,9 @@ DEF CUBE SolidBox {{ translation {x} 0 {top + 0.05} size 0.1 0.1 0.1 physics Phy
     moved = _moved(tmp_path, world, ["HOLDER", "CUBE"])
     assert "CUBE" in moved
     for body, shift in moved.items():  # the cube fell or was pushed up by 1.1 to 12.5 cm when the shapes
-        # differed from Webots' (onto Chair's, WoodenChair's and Armchair's seats: 4.0, 3.2 and 3.0 cm)
+        # differed from Webots' (onto Chair's, WoodenChair's and Armchair's seats: 4.0, 3.2 and 3.0 cm; the fruit
+        # bowl was a solid drum, 6 cm up; the stairs were 0.2 m further along x, solid down to the floor: the cube
+        # fell 15 cm from the first tread or was pushed 5 cm aside from under it)
         assert float(np.linalg.norm(shift)) < 3e-4, body
 
 
@@ -143,3 +154,91 @@ Cabinet { }
         assert all(o > 0.19 for o in opened)  # doors swing wide open, drawers come out to their stops
     finally:
         sim.close()
+
+
+def test_default_translations_set_objects_where_webots_does(tmp_path: Path):
+    # The soccer ball starts 3 mm in the ground (0.11 m for a radius of 0.113 m), the duck 0.5 mm: Webots'
+    # defaults, which its contacts push up (wbtc's did too). Both were 0 0 0 (the ball half in the ground).
+    world = """#VRML_SIM R2025a utf8
+WorldInfo { basicTimeStep 16 }
+Floor { size 4 4 }
+DEF BALL SoccerBall { }
+Pose { translation 1 0 0 children [ DEF DUCK RubberDuck { } ] }
+"""
+    sim = simulation_of(tmp_path, world)
+    try:
+        mujoco.mj_forward(sim.model, sim.data)
+        assert float(sim.data.body("BALL").xpos[2]) == pytest.approx(0.11)
+        assert float(sim.data.body("DUCK").xpos[2]) == pytest.approx(0.02)
+    finally:
+        sim.close()
+    moved = _moved(tmp_path, world, ["BALL", "DUCK"])
+    assert float(moved["BALL"][2]) == pytest.approx(0.003, abs=3e-4)
+    assert float(moved["DUCK"][2]) == pytest.approx(0.0005, abs=3e-4)
+
+
+def test_small_objects_have_webots_masses_shapes_damping_and_recognition_colours(tmp_path: Path):
+    world = tmp_path / "objects.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+WorldInfo { basicTimeStep 16 }
+DEF DUCK RubberDuck { }
+DEF BIG_APPLE Apple { scale 2 }
+DEF BOWL FruitBowl { }
+DEF CAN Can { }
+""")
+    result, _ = compile_world(world)
+    model = result.model
+    duck = model.body("DUCK")
+    # 400 kg/m3 times the volume of Webots' eight shapes (two boxes, a sphere, four capsules, a cylinder); two
+    # spheres made 0.098 kg. Webots' centre of mass is the origin, its damping 0.5 (half the speed a second).
+    assert float(duck.mass[0]) == pytest.approx(0.158, abs=5e-4)
+    assert list(duck.ipos) == pytest.approx([0, 0, 0])
+    assert result.table.linear_damping["DUCK"] == pytest.approx(float(duck.mass[0]) * math.log(2))
+    apple = model.body("BIG_APPLE")
+    spheres = [g for g in range(model.ngeom) if model.geom_bodyid[g] == apple.id and model.geom_contype[g]]
+    assert [round(float(model.geom_size[g][0]), 4) for g in spheres] == [0.1]  # 0.05 m times the scale (was 0.025)
+    assert float(apple.mass[0]) == pytest.approx(0.15)
+    assert float(model.body("BOWL").mass[0]) == pytest.approx(0.5)
+    colours = {r.model: r.colors for r in result.table.recognizable}
+    assert colours == {"rubber duck": [[0.87451, 0.756863, 0.113725]], "apple": [[0.59, 0.75, 0.28]],
+                       "can": [[0.666667, 0.0, 0.0]]}  # none before
+
+
+def test_the_stairs_stringers_collide_beside_the_treads(tmp_path: Path):
+    world = tmp_path / "stairs.wbt"
+    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo { }\nStraightStairs { }\n")
+    result, _ = compile_world(world)
+    model = result.model
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    spans = {}
+    for g in range(model.ngeom):
+        name = model.body(model.geom_bodyid[g]).name
+        if "stringer" in name and model.geom_contype[g] and model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH:
+            mesh = model.geom_dataid[g]
+            start, count = model.mesh_vertadr[mesh], model.mesh_vertnum[mesh]
+            points = model.mesh_vert[start:start + count] @ data.geom_xmat[g].reshape(3, 3).T + data.geom_xpos[g]
+            spans[name] = np.round(np.concatenate([points.min(0), points.max(0)]), 4).tolist()
+    # from the floor under the first tread's front edge to 2 rises above the last tread's back edge, 2 cm thick
+    # beside the 1.27 m treads (the stringers did not collide before)
+    assert spans == {"right stringer": [-0.2, -0.655, 0.0, 1.8, -0.635, 0.9],
+                     "left stringer": [-0.2, 0.635, 0.0, 1.8, 0.655, 0.9]}
+
+
+def test_the_door_lever_collides_as_webots_rose_bar_and_handles(tmp_path: Path):
+    world = tmp_path / "door.wbt"
+    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo { }\nDoor { }\n")
+    result, _ = compile_world(world)
+    model = result.model
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    lever = model.body("door lever").id
+    shapes = sorted((mujoco.mjtGeom(model.geom_type[g]).name, round(float(model.geom_size[g][0]), 4),
+                     round(float(model.geom_size[g][1]), 4), round(float(data.geom_xpos[g][1]), 3))
+                    for g in range(model.ngeom) if model.geom_bodyid[g] == lever and model.geom_contype[g])
+    # the rose (radius 3 x 12.5 mm across the 5 cm door), the bar (2 x 6.5 cm + 5 cm) and two handles of 12 cm
+    # pointing from the bar (0.4 m from the door's axis) towards the hinge (-y); before: two thin boxes
+    # pointing past the door's edge
+    assert shapes == [("mjGEOM_CAPSULE", 0.0125, 0.06, 0.34), ("mjGEOM_CAPSULE", 0.0125, 0.06, 0.34),
+                      ("mjGEOM_CAPSULE", 0.0125, 0.09, 0.4), ("mjGEOM_CYLINDER", 0.0375, 0.0375, 0.4)]
+    assert float(model.body_mass[lever]) == pytest.approx(0.7)
