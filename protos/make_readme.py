@@ -97,8 +97,11 @@ APPROXIMATIONS = """\
 - Webots joints are kept only where they matter for robots (Door leaf on its hinge, Cabinet doors and
   drawers, OfficeChair seat). DoorLever/LeverValve do not turn, Laptop has no Display, Forest trees are
   visual only (at most 400).
-- Road/StraightRoadSegment/CurvedRoadSegment: own geometry (Catmull-Rom smoothing, dashed lines 3 m on /
-  3 m off, barrier 0.3-0.75 m high); road tilt, start/end line textures and turn arrows are not drawn.
+- Road/StraightRoadSegment/CurvedRoadSegment/RoadIntersection: Webots' layout (B-spline centre line,
+  per-point directions, sidewalk widths per way-point, CrashBarrier rail 0.4-0.8 m high) as one convex
+  collision block per span (a barrier's follows the road's directions, not the Extrusion frames of its own
+  path); own drawing (dashed lines 3 m on / 3 m off, square barrier posts); road tilt, start/end line
+  textures, turn arrows and the underside are not drawn.
 - LegoWall: ENU layout inferred from the R2020a NUE file and from world usage (length along x).
 - Ceiling default rotation (`0 1 0 3.14159`), Book's default translation, light fixtures (PointLight/SpotLight
   attenuation `0 0 1`, positions) are our choices.
@@ -106,10 +109,11 @@ APPROXIMATIONS = """\
   the same `randomSeed`; not compared against a Webots run.
 - Erebus rescue maze (worldTile, halfTile, Victim, HazardMap): y-up layout as in Erebus' NUE worlds, tile
   0.3 m x scale, walls 0.025 thick and 0.15 high, floor 0.02 thick (all x scale), Erebus' wall-code rules;
-  curved walls are six straight segments; victims and placards are plain plates in the mean colour of
-  Erebus' images (letters and symbols are not drawn). When several special floors are set, start wins over
-  checkpoint over swamp. Victim/HazardMap `rotation` defaults to `0 1 0 0` (Erebus writes the degenerate
-  `0 0 0 0`, the same identity rotation).
+  curved walls (0.05 thick and 0.3 high before the tile's scale, as Erebus' curvedWall) are six straight
+  segments; victims and placards are plain plates in the mean colour of Erebus' images (letters and symbols
+  are not drawn). When several special floors are set, start wins over checkpoint over swamp.
+  Victim/HazardMap `rotation` defaults to `0 1 0 0` (Erebus writes the degenerate `0 0 0 0`, the same
+  identity rotation).
 """
 
 #: Hand-written facts about the robot models that their interfaces and devices do not show.

@@ -84,6 +84,25 @@ def test_tile_without_walls_or_floor_has_no_bounding_object(tmp_path) -> None:
     assert boxes(tile) == []
 
 
+def test_only_walls_or_a_floor_make_a_tile_collide_but_a_curved_wall_always_does(tmp_path) -> None:
+    # Erebus gives a tile its boxes as bounding object only when a wall code or the floor is set; its
+    # curved wall is a Solid of its own, 0.05 thick and 0.3 high in tile units from 0.075 below the origin.
+    trap, obstacle, curve = expand(tmp_path, f"""
+      worldTile {{ trap TRUE }}
+      worldTile {{ obstacle TRUE }}
+      worldTile {{ curveDir 2 xScale {SCALE} yScale {SCALE} zScale {SCALE} }}
+    """)
+    assert len(boxes(trap)) == 5 and trap.get("boundingObject") is None  # the pit collided before
+    assert obstacle.get("boundingObject") is None
+    segments = boxes(curve)
+    assert len(segments) == 6
+    for centre, size in segments:
+        assert size[1:] == pytest.approx([0.3 * SCALE, 0.05 * SCALE])  # 0.15 high and 0.025 thick before
+        assert centre[1] == pytest.approx(0.075 * SCALE)  # centred on the origin before
+    bounds = curve.get("boundingObject")
+    assert bounds is not None and len(bounds.get("children")) == 6
+
+
 @pytest.mark.parametrize("curve", [1, 2, 3, 4])
 def test_half_tile_quarters_and_curves(tmp_path, curve: int) -> None:
     [half] = expand(tmp_path, f"""halfTile {{

@@ -85,6 +85,10 @@ HOLDERS = {
     "FruitBowl": ("FruitBowl { }", 0.01, 0.0),
     "StraightStairs": ("StraightStairs { }", 0.15, -0.1),  # on the first tread, centred on the origin
     "StraightStairs, under its first tread": ("StraightStairs { }", 0.0, 0.0),  # the risers are open
+    # Webots' FloorLight: a base disc 0.05 m high (radius 0.15 m) and a globe of radius 0.2 m centred 1.524 m up.
+    "FloorLight base": ("FloorLight { }", 0.05, 0.1),
+    "FloorLight globe": ("FloorLight { }", 1.724, 0.0),
+    "FloorLight scaled": ("FloorLight { scale 2 }", 0.1, 0.2),  # Webots' `scale` field (unknown before)
 }
 
 
@@ -102,8 +106,46 @@ DEF CUBE SolidBox {{ translation {x} 0 {top + 0.05} size 0.1 0.1 0.1 physics Phy
     for body, shift in moved.items():  # the cube fell or was pushed up by 1.1 to 12.5 cm when the shapes
         # differed from Webots' (onto Chair's, WoodenChair's and Armchair's seats: 4.0, 3.2 and 3.0 cm; the fruit
         # bowl was a solid drum, 6 cm up; the stairs were 0.2 m further along x, solid down to the floor: the cube
-        # fell 15 cm from the first tread or was pushed 5 cm aside from under it)
+        # fell 15 cm from the first tread or was pushed 5 cm aside from under it; the floor light's base was
+        # 3 cm low and narrower, its globe a 0.19 m wide cylinder topped 12 cm lower)
         assert float(np.linalg.norm(shift)) < 3e-4, body
+
+
+# Road surfaces a cube is set on, where Webots' bounding objects put them: (the road, and the point (x, y,
+# height of the surface) under the cube's centre). A 7 m road's crash barrier path is 0.06 + 0.05 * 7 m beyond
+# the road edge and its rail is 0.07 to 0.17 m inside the path, 0.4 to 0.8 m high; sidewalks widen
+# linearly from start to end; Road's way-points control a cubic B-spline, which passes 1/6 of the way
+# from its corner way-point towards each neighbour ((P0 + 4 P1 + P2) / 6); a curved road's surface has no
+# gaps where its straight pieces meet; RoadIntersection's sidewalks widen from 0 at the centre polygon to
+# their full width where neighbouring sidewalks meet (0.8 m along each road of 4).
+_CORNER = ((0 + 4 * 10 + 10) / 6, (0 + 4 * 0 + 10) / 6)
+_LEFT = (-math.sqrt(0.5), math.sqrt(0.5))  # the B-spline turns through 45 degrees at its corner
+ROAD_SURFACES = {
+    "barrier rail": ("StraightRoadSegment { rightBarrier TRUE }", (5, -(3.5 + 0.41 - 0.12), 0.8)),
+    "widening sidewalk": ("StraightRoadSegment { endingRoadBorderWidth 2 leftBorderBoundingObject TRUE }",
+                          (9.5, 5.2, 0.15)),
+    "curved road joint": ("CurvedRoadSegment { roadBoundingObject TRUE }",
+                          (13.3 * math.sin(math.pi / 8), 13.3 * math.cos(math.pi / 8), 0.0)),
+    "B-spline road": ("Road { wayPoints [0 0 0, 10 0 0, 10 10 0] roadBoundingObject TRUE }",
+                      (_CORNER[0] + 3.2 * _LEFT[0], _CORNER[1] + 3.2 * _LEFT[1], 0.0)),
+    "intersection sidewalk": ("RoadIntersection { startRoadBorderboundingObject TRUE }",
+                              (3.5 * math.sqrt(0.5) + 0.6 * math.sqrt(0.5) + 3.8 * math.sqrt(0.5),
+                               3.5 * math.sqrt(0.5) + 0.6 * math.sqrt(0.5) - 3.8 * math.sqrt(0.5), 0.15)),
+}
+
+
+@pytest.mark.parametrize("case", sorted(ROAD_SURFACES))
+def test_a_cube_set_on_a_road_part_at_webots_place_stays_there(tmp_path: Path, case: str):
+    road, (x, y, top) = ROAD_SURFACES[case]
+    world = f"""#VRML_SIM R2025a utf8
+WorldInfo {{ basicTimeStep 16 }}
+{road}
+DEF CUBE SolidBox {{ translation {x} {y} {top + 0.05} size 0.1 0.1 0.1 physics Physics {{ }} name "cube" }}
+"""
+    shift = _moved(tmp_path, world, ["CUBE"])["CUBE"]
+    # the cube fell 0.65 m to 5 m where wbtc's road parts were elsewhere (the rail 0.6 m further out and
+    # 5 cm lower, the B-spline road up to 2.6 m away) or missing (gaps, the widening parts of sidewalks)
+    assert float(np.linalg.norm(shift)) < 3e-4
 
 
 def test_a_solid_pipe_lying_on_a_face_of_webots_ring_rests_at_its_apothem(tmp_path: Path):

@@ -80,11 +80,13 @@ def test_four_roads_centre_square_and_start_roads(tmp_path: Path) -> None:
         assert road["width"] == 7 and road["numberOfLanes"] == 2
         assert road["rightBorder"] is False and road["leftBorder"] is False
     assert surface_extent(crossing, "road 2") == pytest.approx(np.array([[0, -3.5], [5, 3.5]]))
-    # Sidewalks: straight from where neighbours meet (0.8 m along each road) to the end.
+    # Sidewalks along each road from the polygon, widening from 0 to 0.8 m where neighbours meet (0.8 m
+    # along each road), as Webots lays them out.
     borders = roads(crossing, "border ")
     assert len(borders) == 4
-    assert [list(p) for p in borders[0]["wayPoints"]] == [[0, 0, 0], pytest.approx([4.2, 0, 0])]
-    assert np.linalg.norm([borders[0]["translation"].x, borders[0]["translation"].y]) == pytest.approx(4.3)
+    assert [list(p) for p in borders[0]["wayPoints"]] == [[0, 0, 0], pytest.approx([0.8, 0, 0]), [5, 0, 0]]
+    assert list(borders[0]["roadBorderWidth"]) == pytest.approx([0, 0.8])
+    assert np.linalg.norm([borders[0]["translation"].x, borders[0]["translation"].y]) == pytest.approx(3.5)
 
 
 def test_road_start_edges_meet_the_centre_corners(tmp_path: Path) -> None:
