@@ -57,7 +57,8 @@ def sim(tmp_path: Path):
 
 
 def _extent(sim, body: int) -> tuple[np.ndarray, np.ndarray]:
-    """The lowest and highest corners (world frame) of `body`'s collision geoms (bounding spheres except boxes)."""
+    """The lowest and highest corners (world frame) of `body`'s collision geoms (boxes, spheres, capsules,
+    cylinders exactly; other geoms by their bounding spheres)."""
     model, data = sim.model, sim.data
     mujoco.mj_forward(model, data)
     low, high = np.full(3, np.inf), np.full(3, -np.inf)
@@ -65,9 +66,18 @@ def _extent(sim, body: int) -> tuple[np.ndarray, np.ndarray]:
         b = model.geom_bodyid[g]
         if b != body or not (model.geom_contype[g] or model.geom_conaffinity[g]):
             continue
-        centre, half = data.geom_xpos[g], model.geom_rbound[g]
-        if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_BOX:
-            half = np.abs(data.geom_xmat[g].reshape(3, 3)) @ model.geom_size[g]
+        centre, size, kind = data.geom_xpos[g], model.geom_size[g], model.geom_type[g]
+        axis = data.geom_xmat[g].reshape(3, 3)[:, 2]
+        if kind == mujoco.mjtGeom.mjGEOM_BOX:
+            half = np.abs(data.geom_xmat[g].reshape(3, 3)) @ size
+        elif kind == mujoco.mjtGeom.mjGEOM_SPHERE:
+            half = np.full(3, size[0])
+        elif kind == mujoco.mjtGeom.mjGEOM_CAPSULE:
+            half = np.abs(axis) * size[1] + size[0]
+        elif kind == mujoco.mjtGeom.mjGEOM_CYLINDER:
+            half = np.abs(axis) * size[1] + size[0] * np.sqrt(np.clip(1 - axis**2, 0, 1))
+        else:
+            half = model.geom_rbound[g]
         low, high = np.minimum(low, centre - half), np.maximum(high, centre + half)
     return low, high
 
@@ -96,12 +106,12 @@ def test_the_cat_is_static_half_a_metre_long_and_scales(sim):
     big = model.body(sim.table.bodies["BIG_CAT"]).id
     assert model.body_mass[cat] == 0 or model.body_weldid[cat] == 0  # no physics: part of the static world
     low, high = _extent(sim, cat)
-    assert high[0] - low[0] == pytest.approx(0.52, abs=0.03)  # nose to tail tip
-    assert high[2] == pytest.approx(0.34, abs=0.01)  # tips of the ears
+    assert high[0] - low[0] == pytest.approx(0.55, abs=0.01)  # muzzle to tail tip (Webots' bounding object)
+    assert high[2] == pytest.approx(0.342, abs=0.005)  # tips of the ears
     assert low[2] == pytest.approx(0.0, abs=3e-3)  # paws on the ground
     big_low, big_high = _extent(sim, big)
-    assert big_high[2] == pytest.approx(2 * 0.34, abs=0.02)
-    assert big_high[0] - big_low[0] == pytest.approx(2 * 0.52, abs=0.06)
+    assert big_high[2] == pytest.approx(2 * 0.342, abs=0.01)
+    assert big_high[0] - big_low[0] == pytest.approx(2 * 0.55, abs=0.02)
     recognized = {r.model: r.colors for r in sim.table.recognizable}
     assert recognized["cat"] == [[0.87, 0.58, 0.0]]
 
@@ -111,5 +121,5 @@ def test_a_ball_dropped_on_the_big_cats_back_stays_on_it(sim):
     for _ in range(125):  # 1 s
         sim.step()
     mujoco.mj_forward(sim.model, sim.data)
-    # The big cat's back (the top of its body capsule) is 2 x (0.18 + 0.055) = 0.47 m up.
+    # The big cat's back (the top of its upper-body capsule) is 2 x (0.205 + 0.045) = 0.5 m up.
     assert sim.data.xpos[ball][2] > 0.4
