@@ -22,6 +22,16 @@ REST = {"OfficeChair": 0.0, "Hammer": 0.0135, "Screwdriver": 0.012, "PaintBucket
 SETTLE = {"Hammer": 1e-3}
 
 
+def _on_a_floor(objects: str) -> str:
+    """A world of `objects` on a 4 m floor."""
+    return f"#VRML_SIM R2025a utf8\nWorldInfo {{ basicTimeStep 16 }}\nFloor {{ size 4 4 }}\n{objects}\n"
+
+
+def _joints(model: mujoco.MjModel, kind: mujoco.mjtJoint) -> list[int]:
+    """The model's joints of one type."""
+    return [j for j in range(model.njnt) if model.jnt_type[j] == kind]
+
+
 def _moved(tmp_path: Path, world: str, bodies: list[str]) -> dict[str, np.ndarray]:
     """How far each of `bodies` (DEF names; those without a joint are left out) moves in 1 s of `world`."""
     sim = simulation_of(tmp_path, world)
@@ -49,15 +59,10 @@ DEF OBJECT {proto} {{ translation 0 0 {REST[proto]} name "object" }}
 
 
 def test_the_office_chair_seat_swivels_on_its_base(tmp_path: Path):
-    world = """#VRML_SIM R2025a utf8
-WorldInfo { basicTimeStep 16 }
-Floor { size 4 4 }
-OfficeChair { }
-"""
-    sim = simulation_of(tmp_path, world)
+    sim = simulation_of(tmp_path, _on_a_floor("OfficeChair { }"))
     try:
         model = sim.model
-        hinges = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE]
+        hinges = _joints(model, mujoco.mjtJoint.mjJNT_HINGE)
         assert len(hinges) == 1
         joint = hinges[0]
         assert list(model.jnt_axis[joint]) == [0.0, 0.0, 1.0]
@@ -164,16 +169,11 @@ DEF PIPE SolidPipe {{
 
 
 def test_cabinet_doors_turn_and_drawers_slide_as_in_webots(tmp_path: Path):
-    world = """#VRML_SIM R2025a utf8
-WorldInfo { basicTimeStep 16 }
-Floor { size 4 4 }
-Cabinet { }
-"""
-    sim = simulation_of(tmp_path, world)
+    sim = simulation_of(tmp_path, _on_a_floor("Cabinet { }"))
     try:
         model, data = sim.model, sim.data
-        hinges = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_HINGE]
-        sliders = [j for j in range(model.njnt) if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_SLIDE]
+        hinges = _joints(model, mujoco.mjtJoint.mjJNT_HINGE)
+        sliders = _joints(model, mujoco.mjtJoint.mjJNT_SLIDE)
         assert len(hinges) == 2 and len(sliders) == 4  # the default layout's two doors and four drawers (none before)
         ranges = sorted(tuple(round(float(v), 2) for v in model.jnt_range[j]) for j in hinges)
         assert ranges == [(-1.57, 0.01), (-0.01, 1.57)]  # each door opens outwards, away from its hinge side

@@ -24,6 +24,8 @@ from collections.abc import Callable
 import mujoco
 import numpy as np
 
+from wbtc.compile.static_links import collides, welded_group
+
 #: Webots' WbVector3::almostEquals tolerance on each coordinate.
 TOLERANCE = 1e-10
 
@@ -40,10 +42,10 @@ def exclude_hinge_chains(spec: mujoco.MjSpec, anchors: dict[str, tuple[float, fl
         if not len(lower.joints) or not moves(lower):
             continue  # climb from each ODE body's own (jointed) body
         for upper in _skipped_ancestors(lower, anchors, moves):
-            for a in _group(lower):
-                for b in _group(upper):
+            for a in welded_group(lower):
+                for b in welded_group(upper):
                     key = frozenset((a.name, b.name))
-                    if key in existing or not (_collides(a) and _collides(b)):
+                    if key in existing or not (collides(a) and collides(b)):
                         continue
                     existing.add(key)
                     spec.add_exclude(bodyname1=a.name, bodyname2=b.name)
@@ -76,17 +78,3 @@ def _skipped_ancestors(lower: mujoco.MjsBody, anchors: dict[str, tuple[float, fl
                 break
         node = node.parent
     return found
-
-
-def _group(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
-    """`body` and the bodies fixed to it (one ODE body in Webots)."""
-    group, stack = [], [body]
-    while stack:
-        current = stack.pop()
-        group.append(current)
-        stack.extend(child for child in current.bodies if not len(child.joints))
-    return group
-
-
-def _collides(body: mujoco.MjsBody) -> bool:
-    return any(g.contype or g.conaffinity for g in body.geoms)

@@ -39,7 +39,7 @@ def exclude_static_links(spec: mujoco.MjSpec, moves: Callable[[mujoco.MjsBody], 
     bodies = [spec.worldbody, *spec.worldbody.find_all(mujoco.mjtObj.mjOBJ_BODY)]
     # Static: welded to the world and without Physics (mass 0). A Solid with Physics fixed to a static
     # parent has an ODE body of its own in Webots, so the rule does not spare it.
-    static = [b for b in bodies if not moves(b) and b.mass == 0 and _collides(b)]
+    static = [b for b in bodies if not moves(b) and b.mass == 0 and collides(b)]
     if not static:
         return 0
     existing = {frozenset((e.bodyname1, e.bodyname2)) for e in spec.excludes}
@@ -47,8 +47,8 @@ def exclude_static_links(spec: mujoco.MjSpec, moves: Callable[[mujoco.MjsBody], 
     for body in bodies:
         if body is spec.worldbody or not _jointed(body) or moves(body.parent):
             continue
-        for linked in _welded_group(body):
-            if not _collides(linked):
+        for linked in welded_group(body):
+            if not collides(linked):
                 continue
             for other in static:
                 key = frozenset((other.name, linked.name))
@@ -65,7 +65,7 @@ def _jointed(body: mujoco.MjsBody) -> bool:
     return any(j.type != mujoco.mjtJoint.mjJNT_FREE for j in body.joints)
 
 
-def _welded_group(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
+def welded_group(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
     """`body` and the bodies fixed to it (descendants reached without crossing a joint)."""
     group, stack = [], [body]
     while stack:
@@ -75,5 +75,6 @@ def _welded_group(body: mujoco.MjsBody) -> list[mujoco.MjsBody]:
     return group
 
 
-def _collides(body: mujoco.MjsBody) -> bool:
+def collides(body: mujoco.MjsBody) -> bool:
+    """Whether any of the body's geoms takes part in collisions."""
     return any(g.contype or g.conaffinity for g in body.geoms)
