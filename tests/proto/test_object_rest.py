@@ -32,6 +32,16 @@ def _joints(model: mujoco.MjModel, kind: mujoco.mjtJoint) -> list[int]:
     return [j for j in range(model.njnt) if model.jnt_type[j] == kind]
 
 
+def _posed(tmp_path: Path, objects: str) -> tuple[mujoco.MjModel, mujoco.MjData]:
+    """The compiled model of a world of `objects`, and its data at the written pose."""
+    world = tmp_path / "objects.wbt"
+    world.write_text(f"#VRML_SIM R2025a utf8\nWorldInfo {{ }}\n{objects}\n")
+    result, _ = compile_world(world)
+    data = mujoco.MjData(result.model)
+    mujoco.mj_forward(result.model, data)
+    return result.model, data
+
+
 def _moved(tmp_path: Path, world: str, bodies: list[str]) -> dict[str, np.ndarray]:
     """How far each of `bodies` (DEF names; those without a joint are left out) moves in 1 s of `world`."""
     sim = simulation_of(tmp_path, world)
@@ -247,12 +257,7 @@ DEF CAN Can { }
 
 
 def test_the_stairs_stringers_collide_beside_the_treads(tmp_path: Path):
-    world = tmp_path / "stairs.wbt"
-    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo { }\nStraightStairs { }\n")
-    result, _ = compile_world(world)
-    model = result.model
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
+    model, data = _posed(tmp_path, "StraightStairs { }")
     spans = {}
     for g in range(model.ngeom):
         name = model.body(model.geom_bodyid[g]).name
@@ -268,12 +273,7 @@ def test_the_stairs_stringers_collide_beside_the_treads(tmp_path: Path):
 
 
 def test_the_door_lever_collides_as_webots_rose_bar_and_handles(tmp_path: Path):
-    world = tmp_path / "door.wbt"
-    world.write_text("#VRML_SIM R2025a utf8\nWorldInfo { }\nDoor { }\n")
-    result, _ = compile_world(world)
-    model = result.model
-    data = mujoco.MjData(model)
-    mujoco.mj_forward(model, data)
+    model, data = _posed(tmp_path, "Door { }")
     lever = model.body("door lever").id
     shapes = sorted((mujoco.mjtGeom(model.geom_type[g]).name, round(float(model.geom_size[g][0]), 4),
                      round(float(model.geom_size[g][1]), 4), round(float(data.geom_xpos[g][1]), 3))
