@@ -87,8 +87,8 @@ APPROXIMATIONS = """\
 ## Approximations and unverified facts
 
 - Shapes are primitives, not Webots meshes: outer dimensions follow Webots (documented sizes or bounding
-  objects), the details do not. Where Webots has no documented size (Bed, Windmill, SmallManor, Laptop,
-  OfficeChair, Hammer, Screwdriver, PaintBucket, LeverValve, SquareManhole, tree crowns) the sizes and
+  objects), the details do not. Where Webots has no documented size (Bed, Laptop, OfficeChair,
+  Hammer, Screwdriver, PaintBucket, LeverValve, SquareManhole, tree crowns) the sizes and
   masses are estimates.
 - Colours of textured materials are estimated mean colours; roughness/metalness are plausible values.
   Appearances give a mean colour multiplied by `colorOverride` (or `baseColor`/`color`), as Webots
