@@ -87,16 +87,15 @@ APPROXIMATIONS = """\
 ## Approximations and unverified facts
 
 - Shapes are primitives, not Webots meshes: outer dimensions follow Webots (documented sizes or bounding
-  objects), the details do not. Where Webots has no documented size (Bed, Laptop, OfficeChair,
-  Hammer, Screwdriver, PaintBucket, LeverValve, SquareManhole, tree crowns) the sizes and
-  masses are estimates.
+  objects), the details do not. Where Webots has no documented size (LeverValve, SquareManhole, tree
+  crowns) the sizes and masses are estimates.
 - Colours of textured materials are estimated mean colours; roughness/metalness are plausible values.
   Appearances give a mean colour multiplied by `colorOverride` (or `baseColor`/`color`), as Webots
   multiplies it with its texture.
 - Objects are static unless Webots gives them physics (a `mass`, `physics` or `density` field).
 - Webots joints are kept only where they matter for robots (Door leaf on its hinge, Cabinet doors and
-  drawers, OfficeChair seat). DoorLever/LeverValve do not turn, Laptop has no Display, Forest trees are
-  visual only (at most 400).
+  drawers, OfficeChair seat, Laptop lid with its PositionSensor and Display). DoorLever/LeverValve do
+  not turn, Forest trees are visual only (at most 400).
 - Road/StraightRoadSegment/CurvedRoadSegment/RoadIntersection: Webots' layout (B-spline centre line,
   per-point directions, sidewalk widths per way-point, CrashBarrier rail 0.4-0.8 m high) as one convex
   collision block per span (a barrier's follows the road's directions, not the Extrusion frames of its own
