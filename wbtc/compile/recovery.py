@@ -48,8 +48,9 @@ def table(ctx: CompileContext, model: mujoco.MjModel) -> RecoveryTable:
     basic = ctx.table.basic_time_step / 1000.0
     # ODE takes softERP of the depth out per step: depth × (1 − ERP)^n after n steps. The same decay,
     # continuous over the substeps, is exp(−rate·t) with rate = −ln(1 − ERP) / basicTimeStep.
-    erp = np.array([[min(soft_contact.softness_of(ctx, a, b).erp, MAX_ERP) for b in materials] for a in materials])
+    softness = [[soft_contact.softness_of(ctx, a, b) for b in materials] for a in materials]
+    erp = np.array([[min(s.erp, MAX_ERP) for s in row] for row in softness])
     rate = -np.log1p(-np.maximum(erp, 0.0)) / basic
-    cfm = np.array([[max(soft_contact.softness_of(ctx, a, b).cfm, 1e-10) for b in materials] for a in materials])
+    cfm = np.array([[max(s.cfm, 1e-10) for s in row] for row in softness])
     shape = (len(materials), len(materials))
     return RecoveryTable(geom_class, rate.reshape(shape), cfm.reshape(shape))

@@ -181,8 +181,8 @@ def tree_news(sim: Simulation, robot: RobotState) -> dict[str, list[int]]:
     told once per robot.
     """
     news: dict[str, list[int]] = {}
-    tree = getattr(sim, "tree", None)
-    if tree is None:
+    tree = sim.tree
+    if tree is None:  # a world run without a supervisor has no scene tree
         return news
     if robot.dead_seen < len(tree.dead_fields):
         news["dead_fields"] = tree.dead_fields[robot.dead_seen:]

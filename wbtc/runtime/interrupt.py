@@ -10,9 +10,9 @@ usual shell code (130 for SIGINT, 143 for SIGTERM).
 A second signal, or a first one while nothing is stepping (waiting for an `<extern>` controller to
 connect, compiling), stops at once through KeyboardInterrupt: nothing half-written is kept.
 
-Controllers run in their own process group (`ControllerProcess.start`), so the terminal's Ctrl-C
-reaches wbtc alone and each controller ends through `step()` returning -1 rather than with a
-KeyboardInterrupt traceback of its own.
+Controllers `wbtc run` starts ignore SIGINT (the controller library's `start`): they stay in wbtc's
+process group, so that a batch's time-out still kills them, and the terminal's Ctrl-C ends each one
+through `step()` returning -1 rather than with a KeyboardInterrupt traceback of its own.
 """
 
 from __future__ import annotations
@@ -70,6 +70,6 @@ class StopSignals:
         """The summary's end reason for the received signal."""
         return f"interrupted ({_NAMES.get(self.received or 0, 'signal')})"
 
-    def exit_code(self) -> int | None:
-        """The shell's code for the received signal (128 + its number), or None without one."""
-        return None if self.received is None else 128 + int(self.received)
+    def exit_code(self) -> int:
+        """The shell's code for the received signal: 128 + its number (call it once one was received)."""
+        return 128 + int(self.received or 0)

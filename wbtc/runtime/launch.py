@@ -134,7 +134,7 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
     else:
         print(summary(outcome))
     if signals.received is not None:  # the shell's code for a run ended by Ctrl-C (130) or SIGTERM (143)
-        return signals.exit_code() or 1
+        return signals.exit_code()
     # simulationQuit(status) makes `wbtc run` exit with that status, as Webots does.
     return outcome.quit_status if outcome.quit_status is not None else 0
 

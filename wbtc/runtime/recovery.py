@@ -78,7 +78,6 @@ class Recovery:
             _soften(data, rows[linked], self.cfm[a, b][linked] / h)
 
 
-
 def _soften(data: mujoco.MjData, rows: np.ndarray, soft: np.ndarray) -> None:
     """Give the normal rows at `rows` ODE's regularisation R = softCFM / h where MuJoCo's is stiffer.
 

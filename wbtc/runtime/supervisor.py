@@ -75,6 +75,10 @@ class FlushResult:
     reload: bool = False  # the world file anew (worldReload, worldLoad), every controller restarted
 
 
+#: The writes that may delete nodes (an SFNode import replaces the node it holds): the tree is pruned after them.
+_DELETING = {"node.remove", "field.remove", "field.removeSF", "field.importSFNode"}
+
+
 class SupervisorHub:
     """Every supervisor controller's view of the world, and the queue of their writes."""
 
@@ -224,8 +228,8 @@ class SupervisorHub:
             outcome.restart += supervisor_world.recompile(self, dirty, self._regenerated)
             self._regenerated.clear()
             outcome.rebuilt = True
-        if dirty or outcome.reset:  # nodes removed, replaced, or (a reset) imported since the start are gone
-            self.tree.prune()
+        if outcome.reset or any(op in _DELETING for _, op, _ in pending):
+            self.tree.prune()  # nodes removed, replaced, or (a reset) imported since the start are gone
         self._follow()  # a regenerated Viewpoint follows on from where it is, before the next step
         changes = self.changes
         changes.rebuilt |= outcome.rebuilt
