@@ -73,7 +73,7 @@ def compile_scene(scene: Scene, options: CompileOptions | None = None) -> Compil
     if options.strict and ctx.warnings:
         raise CompileError("", diagnostics=[Diagnostic(w.message, w.span, hint=w.hint) for w in ctx.warnings])
     _planes_in_moving_bodies(spec)
-    hfield_refine.refine_height_fields(spec, _moves)
+    hfield_refine.refine_height_fields(spec, _moves, options.ode_contacts)
     still_joints.hold_still_joints(spec)
     bodyless.separate_bodyless(spec)
     if options.ode_contacts:
