@@ -75,9 +75,10 @@ COVERAGE = """\
 ## Corpus coverage
 
 `tests/proto/test_corpus_expand.py` expands every world of the shared corpus. Of the 3,284 PROTO
-instances written in those worlds, 6 (0.2 %) stay unresolved; `tests/proto/unresolved.txt` lists each
-missing PROTO with the reason (three project PROTOs their projects did not ship, and Webots robots not
-written yet: Irb4600-40 and three benchmark robots). The RoboCup Junior rescue-maze
+instances written in those worlds, 3 (0.1 %) stay unresolved; `tests/proto/unresolved.txt` lists each
+missing PROTO with the reason (two project PROTOs their projects did not ship, and a Webots robot not
+written yet: Irb4600-40). Webots' robotbenchmark robots the corpus uses (WallFollowingPioneer3dx,
+MazeRunnerBenchmark, InvertedPendulumBenchmark) are written here. The RoboCup Junior rescue-maze
 PROTOs of the Erebus simulator (`worldTile`, `halfTile`, `Victim`, `HazardMap`: 329 instances in the
 corpus, whose project did not ship them) are
 written here from Erebus' published tile layout.
@@ -87,23 +88,24 @@ APPROXIMATIONS = """\
 ## Approximations and unverified facts
 
 - Shapes are primitives, not Webots meshes: outer dimensions follow Webots (documented sizes or bounding
-  objects), the details do not. Where Webots has no documented size (LeverValve, SquareManhole, tree
-  crowns) the sizes and masses are estimates.
+  objects), the details do not. Where Webots has no documented size (tree crowns) the sizes and masses
+  are estimates.
 - Colours of textured materials are estimated mean colours; roughness/metalness are plausible values.
   Appearances give a mean colour multiplied by `colorOverride` (or `baseColor`/`color`), as Webots
   multiplies it with its texture.
 - Objects are static unless Webots gives them physics (a `mass`, `physics` or `density` field).
 - Webots joints are kept only where they matter for robots (Door leaf on its hinge, Cabinet doors and
-  drawers, OfficeChair seat, Laptop lid with its PositionSensor and Display). DoorLever/LeverValve do
-  not turn, Forest trees are visual only (at most 400).
+  drawers, OfficeChair seat, Laptop lid with its PositionSensor and Display, the LeverValve lever and
+  the SmallValve/LargeValve wheels). DoorLever does not turn, Forest trees are visual only (at most 400).
 - Road/StraightRoadSegment/CurvedRoadSegment/RoadIntersection: Webots' layout (B-spline centre line,
   per-point directions, sidewalk widths per way-point, CrashBarrier rail 0.4-0.8 m high) as one convex
   collision block per span (a barrier's follows the road's directions, not the Extrusion frames of its own
   path); own drawing (dashed lines 3 m on / 3 m off, square barrier posts); road tilt, start/end line
   textures, turn arrows and the underside are not drawn.
 - LegoWall: ENU layout inferred from the R2020a NUE file and from world usage (length along x).
-- Ceiling default rotation (`0 1 0 3.14159`), Book's default translation, light fixtures (PointLight/SpotLight
-  attenuation `0 0 1`, positions) are our choices.
+- Book's default translation and the light fixtures other than CeilingLight and CeilingSpotLight
+  (PointLight/SpotLight attenuation `0 0 1`, positions) are our choices; Ceiling's default rotation
+  (`1 0 0 3.14159`) and CeilingLight's/CeilingSpotLight's lights are checked against Webots' files.
 - UnevenTerrain reproduces Webots' noise recipe and random generator, so heights should match Webots for
   the same `randomSeed`; not compared against a Webots run.
 - Erebus rescue maze (worldTile, halfTile, Victim, HazardMap): y-up layout as in Erebus' NUE worlds, tile

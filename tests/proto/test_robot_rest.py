@@ -25,6 +25,7 @@ MOVES = {
     "TiagoLite": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth)",
     "TiagoBody": "a part of TIAGo placed for its base's body slot: alone it falls",
     "TinkerbotsBase": "the 4 cm block is centred on its origin, half in the floor at Webots' default",
+    "WallFollowingPioneer3dx": "its caster is 7.9 mm above the floor: it tips back onto it (as Pioneer3dx)",
     "Yamor": "its head plate starts 0.6 mm in the ground and it tips onto its body block",
     "Youbot": "Webots' default leaves its wheels 15 mm in the air",
 }
