@@ -182,6 +182,10 @@ def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | 
     if painted.image_uv is not None:
         return faceset_uv.draw_layer(pixels, painted, (out_w, out_h), transform), out_w / (width * columns)
     layer = np.full((out_h, out_w, pixels.shape[2]), 255, dtype=np.uint8)
+    # Without a rotation the transform moves s and t each on its own (s' = f(s), t' = g(t)): the
+    # image's columns follow from the region's columns alone, its rows from its rows, so one pass per
+    # axis picks them (the same floating-point values as per texel: the rotation's 0 terms add 0).
+    separable = transform is None or not float(transform.get("rotation") or 0.0)
     for s0, t0, s1, t1 in painted.regions:
         # (s, t) count t upwards; the layer's rows run from the top.
         c0, c1 = round(s0 * out_w), round(s1 * out_w)
@@ -191,13 +195,26 @@ def _layer(pixels: np.ndarray, painted: primitive_uv.Painted, transform: Node | 
         # Each texel centre's (s, t) within the region, as the part's mesh has them.
         s = (np.arange(c1 - c0) + 0.5) / (c1 - c0)
         t = 1.0 - (np.arange(r1 - r0) + 0.5) / (r1 - r0)
+        if separable:
+            along_s = textures.apply_texture_transform(np.column_stack([s, np.zeros_like(s)]), transform)[:, 0]
+            along_t = textures.apply_texture_transform(np.column_stack([np.zeros_like(t), t]), transform)[:, 1]
+            layer[r0:r1, c0:c1] = pixels[np.ix_(_image_rows(along_t, height), _image_columns(along_s, width))]
+            continue
         ss, tt = np.meshgrid(s, t)
         moved = textures.apply_texture_transform(np.column_stack([ss.ravel(), tt.ravel()]), transform)
-        # The image repeats; its row 0 is t = 1.
-        cols = np.floor(np.mod(moved[:, 0], 1.0) * width).astype(int).clip(0, width - 1)
-        picked = np.floor(np.mod(1.0 - moved[:, 1], 1.0) * height).astype(int).clip(0, height - 1)
+        picked, cols = _image_rows(moved[:, 1], height), _image_columns(moved[:, 0], width)
         layer[r0:r1, c0:c1] = pixels[picked, cols].reshape(r1 - r0, c1 - c0, -1)
     return layer, out_w / (width * columns)
+
+
+def _image_columns(s: np.ndarray, width: int) -> np.ndarray:
+    """The image's pixel columns at texture coordinates s (the image repeats)."""
+    return np.floor(np.mod(s, 1.0) * width).astype(int).clip(0, width - 1)
+
+
+def _image_rows(t: np.ndarray, height: int) -> np.ndarray:
+    """The image's pixel rows at texture coordinates t (the image repeats; its row 0 is t = 1)."""
+    return np.floor(np.mod(1.0 - t, 1.0) * height).astype(int).clip(0, height - 1)
 
 
 def _copy_material(ctx: CompileContext, material: str, texture: str, base: str) -> str:
