@@ -74,11 +74,11 @@ comments or field comments (or the notes in the script) and run it again rather 
 COVERAGE = """\
 ## Corpus coverage
 
-`tests/proto/test_corpus_expand.py` expands every world of the shared corpus. Of the 3,284 PROTO
-instances written in those worlds, 3 (0.1 %) stay unresolved; `tests/proto/unresolved.txt` lists each
-missing PROTO with the reason (two project PROTOs their projects did not ship, and a Webots robot not
-written yet: Irb4600-40). Webots' robotbenchmark robots the corpus uses (WallFollowingPioneer3dx,
-MazeRunnerBenchmark, InvertedPendulumBenchmark) are written here. The RoboCup Junior rescue-maze
+`tests/proto/test_corpus_expand.py` expands every world of the shared corpus. Of the 3,286 PROTO
+instances written in those worlds, 2 (0.1 %) stay unresolved; `tests/proto/unresolved.txt` lists each
+missing PROTO with the reason (two project PROTOs their project did not ship). Webots' IRB 4600/40 arm
+(Irb4600-40) and the robotbenchmark robots the corpus uses (WallFollowingPioneer3dx, MazeRunnerBenchmark,
+InvertedPendulumBenchmark) are written here. The RoboCup Junior rescue-maze
 PROTOs of the Erebus simulator (`worldTile`, `halfTile`, `Victim`, `HazardMap`: 329 instances in the
 corpus, whose project did not ship them) are
 written here from Erebus' published tile layout.

@@ -38,15 +38,17 @@ def test_corpus_world_expands(world) -> None:
 def test_unresolved_instances_stay_under_ten_percent() -> None:
     # Issue 3: at most 10 % of the PROTO instances may stay unresolved. The Erebus rescue-maze tiles and
     # markers (worldTile, halfTile, Victim, HazardMap: 329 instances), TinkerbotsBase (43), UR5e (20),
-    # SickLms291 (3), Mavic2Pro (1), Pioneer2, CreateWall, LinkedWalls, LargeValve and SmallValve (1 each)
-    # now come from wbtc's library; what is left is listed in unresolved.txt.
+    # SickLms291 (3), Mavic2Pro (1), Pioneer2, CreateWall, LinkedWalls, LargeValve, SmallValve, Irb4600-40 and
+    # the three robotbenchmark robots (1 each) now come from wbtc's library; what is left is listed in
+    # unresolved.txt. Irb4600-40 resolving also counts the two BrushedAluminium instances its world writes
+    # inside the arm's handSlot (3,284 -> 3,286).
     # The exact count
     # makes any change (better or worse) show up here.
     if not _TOTALS:  # run alone: expand the corpus here
         for world in WORLDS:
             test_corpus_world_expands(world)
     total, unresolved = sum(_TOTALS.values()), sum(_UNRESOLVED.values())
-    assert total == 3284
-    assert unresolved == 3, f"{unresolved}/{total} PROTO instances unresolved: {_UNRESOLVED.most_common()}"
+    assert total == 3286
+    assert unresolved == 2, f"{unresolved}/{total} PROTO instances unresolved: {_UNRESOLVED.most_common()}"
     assert unresolved / total <= 0.10
     assert _MISSING == set(LISTED), "tests/proto/unresolved.txt lists a PROTO that now resolves"
