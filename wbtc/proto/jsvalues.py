@@ -15,6 +15,7 @@ from wbtc.scene.model import Node
 
 if TYPE_CHECKING:
     from wbtc.proto.expand import Expander
+    from wbtc.proto.instances import ProtoInstance
     from wbtc.proto.resolve import Resolver
 
 _KEYS = {"Vec2f": ("x", "y"), "Vec3f": ("x", "y", "z"), "Color": ("r", "g", "b"), "Rotation": ("x", "y", "z", "a")}
@@ -38,6 +39,11 @@ def to_template_value(value: Any, field_type: str, expander: Expander, resolver:
 
 def _node_value(node: Node, expander: Expander, resolver: Resolver) -> dict[str, Any]:
     fields: dict[str, Any] = {}
+    if node.proto is not None:
+        # A PROTO instance an outer PROTO already expanded (a node it passes on by IS, as
+        # StraightRoadSegment passes its `lines` of RoadLines to Road): the template sees the PROTO
+        # and its interface values, as Webots shows it, not the base node it expanded into.
+        return _instance_value(node.proto, expander, resolver)
     if node.schema is not None:
         for name, schema in node.schema.fields.items():
             value = node.get(name)
@@ -55,6 +61,20 @@ def _node_value(node: Node, expander: Expander, resolver: Resolver) -> dict[str,
         fields[name] = {"value": _safe(values[name], interface.type, expander, resolver),
                         "defaultValue": _safe(defaults[name], interface.type, expander, resolver)}
     return {"node_name": node.type_name, "fields": fields}
+
+
+def _instance_value(instance: ProtoInstance, expander: Expander, resolver: Resolver) -> dict[str, Any]:
+    """{node_name, fields} of an expanded PROTO instance: its values, and its PROTO's defaults."""
+    from wbtc.proto.model import load_proto
+
+    model = load_proto(instance.source.path)
+    fields: dict[str, Any] = {}
+    for name, interface in model.fields.items():
+        default = expander._default(interface, model, expander.resolver_for(model))
+        value = instance.values.get(name, default)
+        fields[name] = {"value": _safe(value, interface.type, expander, resolver),
+                        "defaultValue": _safe(default, interface.type, expander, resolver)}
+    return {"node_name": instance.name, "fields": fields}
 
 
 def _safe(value: Any, field_type: str, expander: Expander, resolver: Resolver) -> Any:
