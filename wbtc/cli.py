@@ -103,12 +103,14 @@ def compile_command(
     """Compile a world to a MuJoCo model (MJCF), with its textures beside it."""
     import_mujoco_without_gl()  # compiling draws nothing
     from wbtc.compile.context import CompileOptions
-    from wbtc.compile.output import write_mjcf
+    from wbtc.compile.output import check_output_folder, write_mjcf
     from wbtc.pipeline import compile_world
 
     out = output or world.with_suffix(".xml")
-    result, expansion = _guard(lambda: compile_world(world, CompileOptions(max_substep_ms=substep, strict=strict,
-                                                                        ode_contacts=ode_contacts)))
+    _guard(lambda: check_output_folder(out))  # before compiling, which can take seconds
+    # No paint layers: plain MuJoCo has no Pen to paint them (CompileOptions.paint).
+    options = CompileOptions(max_substep_ms=substep, strict=strict, ode_contacts=ode_contacts, paint=False)
+    result, expansion = _guard(lambda: compile_world(world, options))
     _print_diagnostics(expansion.warnings + result.warnings)
     _guard(lambda: write_mjcf(result.spec, out))
     typer.echo(f"{out}: {result.summary()}")

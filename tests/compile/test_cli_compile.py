@@ -84,3 +84,47 @@ def test_strict_turns_an_unhonoured_field_into_an_error(tmp_path: Path) -> None:
         f"{world}:8:3: error: Solid.locked is not honoured by wbtc yet; it is ignored")
     assert result.stdout == ""
     assert list(tmp_path.iterdir()) == []
+
+
+def test_compile_of_a_world_with_a_pen_writes_no_paint_layers(tmp_path: Path) -> None:
+    # A Pen makes every shape paintable in a run (a texture and material of its own each); plain MuJoCo
+    # has no pen, so the MJCF keeps the shapes' shared textures: here one checker texture for two boxes.
+    world = tmp_path / "pen.wbt"
+    world.write_text("""#VRML_SIM R2025a utf8
+WorldInfo { }
+DEF A Solid { children [ Shape { appearance PBRAppearance { baseColorMap ImageTexture { url "checker.png" } }
+  geometry Box { size 1 1 0.1 } } ] }
+DEF B Solid { translation 2 0 0 children [ Shape { appearance PBRAppearance { baseColorMap ImageTexture {
+  url "checker.png" } } geometry Box { size 1 1 0.1 } } ] }
+Robot { children [ Pen { } ] }
+""", encoding="utf-8")
+    from PIL import Image
+
+    Image.new("RGB", (8, 8), (200, 30, 30)).save(tmp_path / "checker.png")
+    out = tmp_path / "pen.xml"
+    result = runner.invoke(app, ["compile", str(world), "-o", str(out)])
+    assert result.exit_code == 0, result.output
+    model = mujoco.MjModel.from_xml_path(str(out))
+    names = [mujoco.mj_id2name(model, mujoco.mjtObj.mjOBJ_TEXTURE, t) or "" for t in range(model.ntex)]
+    assert not [name for name in names if name.startswith("paint_")]
+    assert model.ntex == 1
+    # A run of the same world paints: each box has its own layer.
+    from wbtc.pipeline import compile_world
+
+    run_model = compile_world(world)[0].model
+    painted = [mujoco.mj_id2name(run_model, mujoco.mjtObj.mjOBJ_TEXTURE, t) or "" for t in range(run_model.ntex)]
+    assert len([name for name in painted if name.startswith("paint_")]) == 2
+
+
+def test_compile_into_a_missing_folder_says_so_before_compiling(tmp_path: Path, monkeypatch) -> None:
+    import wbtc.pipeline
+
+    def never(*args, **kwargs):
+        raise AssertionError("compiled although the output folder is missing")
+
+    monkeypatch.setattr(wbtc.pipeline, "compile_world", never)
+    out = tmp_path / "missing" / "robot.xml"
+    result = runner.invoke(app, ["compile", str(WORLDS / "two_wheel_robot.wbt"), "-o", str(out)])
+    assert result.exit_code == 1
+    assert result.stderr.strip() == f"error: the output folder {out.parent} does not exist"
+    assert not (tmp_path / "missing").exists()

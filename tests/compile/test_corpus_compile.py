@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 from conftest import CORPUS, corpus_files
 
+from wbtc.compile.context import CompileOptions
 from wbtc.compile.output import write_mjcf
 from wbtc.errors import WbtcError
 from wbtc.pipeline import compile_world
@@ -63,8 +64,9 @@ def test_corpus_world_compiles_and_steps(world) -> None:
 
 @pytest.mark.parametrize("world", [w for w in WORLDS if _id(w) not in REJECTED], ids=_id)
 def test_corpus_world_writes_mjcf_that_plain_mujoco_loads(world, tmp_path) -> None:
-    # `wbtc compile -o` promises a file plain MuJoCo reads: same bodies, joints, geoms and masses.
-    result, _expansion = compile_world(world)
+    # `wbtc compile -o` promises a file plain MuJoCo reads: same bodies, joints, geoms and masses
+    # (compiled as `wbtc compile` does: without a Pen's paint layers).
+    result, _expansion = compile_world(world, CompileOptions(paint=False))
     write_mjcf(result.spec, tmp_path / "model.xml")
     loaded = mujoco.MjModel.from_xml_path(str(tmp_path / "model.xml"))
     model = result.model

@@ -35,11 +35,15 @@ class CompileOptions:
         strict: unhonoured fields are errors instead of warnings.
         ode_contacts: contacts as ODE's soft rows (softERP, softCFM) with hard Coulomb friction
             (wbtc.compile.soft_contact), instead of MuJoCo's stiff default contact.
+        paint: in a world with a Pen, give every shape a paint layer of its own for the pen's ink
+            (wbtc.compile.paintable). `wbtc compile` leaves it off: plain MuJoCo has no pen, and the
+            layers show what the shared textures show.
     """
 
     max_substep_ms: float = 2.0
     strict: bool = False
     ode_contacts: bool = False
+    paint: bool = True
 
 
 @dataclass

@@ -28,8 +28,7 @@ def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
         CompileError: the output folder does not exist or cannot be written.
     """
     out = Path(out)
-    if not out.parent.is_dir():
-        raise CompileError(f"the output folder {out.parent} does not exist")
+    check_output_folder(out)
     _buffer_textures_to_files(spec)
     _inertias_clear_of_the_triangle_edge(spec)
     assets = dict(spec.assets)
@@ -60,6 +59,12 @@ def write_mjcf(spec: mujoco.MjSpec, out: Path) -> list[Path]:
     except OSError as exc:
         raise CompileError(f"cannot write {out}: {exc.strerror or exc}") from None
     return written
+
+
+def check_output_folder(out: Path) -> None:
+    """Raise CompileError when the folder `out` goes into does not exist."""
+    if not Path(out).parent.is_dir():
+        raise CompileError(f"the output folder {Path(out).parent} does not exist")
 
 
 def _buffer_textures_to_files(spec: mujoco.MjSpec) -> None:

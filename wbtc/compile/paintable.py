@@ -18,7 +18,9 @@ one Pen, every visual Shape is compiled with:
 
 The DeviceTable's `paintable` names each such geom's texture, how many texels of Webots' layer a
 metre of lead covers, the texture's texels per texel of Webots' layer and the geometry's node type.
-Worlds without a Pen compile as before.
+Worlds without a Pen compile as before, and so does every world `wbtc compile` writes as MJCF
+(`CompileOptions.paint` off): plain MuJoCo has no pen, and 777 paint layers made the corpus's IRB 4600
+pen world's MJCF 441 MB of textures.
 
 Not honoured yet: a texture a Display draws on is not paintable (the display's image wins); a Mesh
 whose file has no texture coordinates, or an untextured Mesh, gets no ink (Webots paints it on a layer
@@ -48,9 +50,12 @@ _MAX_LAYER = 4096
 
 
 def enabled(ctx: CompileContext) -> bool:
-    """Whether the world has a Pen (then textured shapes are compiled paintable); found once per compile."""
+    """Whether the world has a Pen (then textured shapes are compiled paintable); found once per compile.
+
+    Never for an MJCF written to disk (`CompileOptions.paint` off): nothing paints there.
+    """
     if ctx.paint is None:
-        ctx.paint = any(node.base_type == "Pen" for node in ctx.scene.walk())
+        ctx.paint = ctx.options.paint and any(node.base_type == "Pen" for node in ctx.scene.walk())
     return ctx.paint
 
 
