@@ -82,6 +82,9 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
         ctx.warn("SolidReference endPoints (closed loops) are not supported by wbtc yet", end.span)
         return
     kind = node.base_type
+    if body is ctx.spec.worldbody:
+        _outside_solids(builder, node, end, body, frame, dynamic)
+        return
     if not isinstance(end, Node) or not end.is_a("Solid"):
         if robot is not None:
             _without_end_point(builder, node, kind, body, frame, robot)
@@ -102,6 +105,20 @@ def add_joint(builder: BodyBuilder, node: Node, body: mujoco.MjsBody, frame: Fra
         own = robot.devices[below:below + count]
         del robot.devices[below:below + count]
         robot.devices[mark:mark] = own
+
+
+def _outside_solids(builder: BodyBuilder, node: Node, end: object, body: mujoco.MjsBody, frame: Frame,
+                    dynamic: bool) -> None:
+    """A Joint with no Solid above it (at the top of the world, or in a top-level Pose or Group).
+
+    Webots attaches no ODE joint then (WbBasicJoint::setJoint: no upper Solid): the endPoint is a
+    Solid of its own, free when it has Physics. wbtc does the same, and says so.
+    """
+    ctx = builder.ctx
+    ctx.warn(f"this {node.base_type} is not inside a Solid: Webots does not attach it, and its endPoint "
+             "moves on its own (a joint belongs in the children of the Solid it turns against)", node.span)
+    if isinstance(end, Node) and end.is_a("Solid"):
+        builder.add_solid(end, body, frame, None, dynamic)
 
 
 def _without_end_point(builder: BodyBuilder, node: Node, kind: str, body: mujoco.MjsBody, frame: Frame,
