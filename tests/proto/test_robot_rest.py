@@ -21,6 +21,9 @@ MOVES = {
     "Mavic2Pro": "its front legs start 4.75 mm in the ground and it tips back onto its body box",
     "Pioneer3dx": "its caster is 7.9 mm above the floor: it tips back onto it",
     "Robotino3": "Webots' default puts its wheels 3.85 mm into the floor (about ODE's resting depth)",
+    "Spot": "Webots' default leaves its feet 9.7 mm above the floor: it drops onto them and stands",
+    "SpotLeg": "a leg of Spot, hidden in Webots: alone no Solid holds its hinges, which Webots (and wbtc) then "
+               "leave unattached, so its links fall",
     "TiagoBase": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth)",
     "TiagoLite": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth)",
     "TiagoBody": "a part of TIAGo placed for its base's body slot: alone it falls",
