@@ -25,6 +25,8 @@ class Span:
 
 #: `Diagnostic.topic` of a warning about a texture or mesh file that cannot be read (`wbtc check` lists them).
 UNREADABLE_FILE = "unreadable file"
+#: `Diagnostic.topic` of a warning about a Joint that Webots leaves unattached (`wbtc check` lists them).
+UNATTACHED_JOINT = "unattached joint"
 
 
 @dataclass(frozen=True, slots=True)

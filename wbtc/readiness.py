@@ -2,7 +2,8 @@
 
 Three checks, each a warning with the location of the node it is about (an error with `--strict`):
 
-- the world compiles (MuJoCo accepts the model); a compile error is reported where it points;
+- the world compiles (MuJoCo accepts the model); a compile error is reported where it points, and so
+  is a Joint that Webots leaves unattached (no Solid above it: its endPoint moves on its own);
 - every texture and mesh file it names can be read (a local file that is missing, a `webots://` or
   `http(s)://` one that is neither installed, cached nor downloadable: `wbtc.compile.remote`);
 - every robot's controller is a Python controller wbtc can start: found as Webots looks for it
@@ -18,7 +19,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from wbtc.errors import UNREADABLE_FILE, Diagnostic, Span, WbtcError
+from wbtc.errors import UNATTACHED_JOINT, UNREADABLE_FILE, Diagnostic, Span, WbtcError
 from wbtc.runtime.controllers import NO_CONTROLLER, controller_folders, find_controller
 from wbtc.scene.model import Node, Scene
 
@@ -43,7 +44,7 @@ def _compile_check(scene: Scene) -> list[Diagnostic]:
         result = compile_scene(scene)
     except WbtcError as exc:
         return [Diagnostic(d.message, d.span, "warning", d.hint) for d in exc.diagnostics]
-    return [w for w in result.warnings if w.topic == UNREADABLE_FILE]
+    return [w for w in result.warnings if w.topic in (UNREADABLE_FILE, UNATTACHED_JOINT)]
 
 
 def _robots(scene: Scene) -> list[Node]:

@@ -50,3 +50,16 @@ def test_its_end_point_falls_freely_and_wbtc_says_why(tmp_path: Path, text: str,
         assert sim.data.xpos[body][2] == pytest.approx(1 - 9.81 * sim.time**2 / 2, abs=0.02)
     finally:
         sim.close()
+
+
+def test_wbtc_check_lists_the_unattached_joint(tmp_path: Path) -> None:
+    from typer.testing import CliRunner
+
+    from wbtc.cli import app
+
+    (tmp_path / "world.wbt").write_text(IN_POSE, encoding="utf-8")
+    result = CliRunner().invoke(app, ["check", str(tmp_path / "world.wbt")])
+    assert result.exit_code == 0, result.output
+    assert "warnings: 1" in result.stdout
+    where = f"{tmp_path / 'world.wbt'}:6:5"
+    assert f"{where}: warning: this HingeJoint is not inside a Solid" in result.stdout + result.stderr

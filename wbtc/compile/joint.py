@@ -13,6 +13,9 @@ Not honoured yet: `suspensionSpringConstant`, `suspensionDampingConstant`, `susp
 BallJoint's spring and damping per axis (a ball joint with devices is three hinges, each with its own
 parameters; without devices it is one MuJoCo ball joint with the first parameters'); SolidReference
 endPoints (closed loops). Brake devices are listed; the runtime applies their damping.
+
+A joint with no Solid above it (at the top of the world, or in a top-level Pose or Group) is left
+unattached, as Webots leaves it (its endPoint is a Solid of its own), with a warning.
 """
 
 from __future__ import annotations
@@ -27,6 +30,7 @@ from wbtc.compile import device, joint_stops
 from wbtc.compile.context import COLLISION_GROUP, KINEMATIC_MASS, CompileContext, info
 from wbtc.compile.frames import Frame, axis_angle_quat, quat_conj, quat_rotate, quat_to_mat
 from wbtc.compile.table import RobotEntry
+from wbtc.errors import UNATTACHED_JOINT
 from wbtc.scene.model import Node
 from wbtc.schema.registry import node_schema
 
@@ -116,7 +120,8 @@ def _outside_solids(builder: BodyBuilder, node: Node, end: object, body: mujoco.
     """
     ctx = builder.ctx
     ctx.warn(f"this {node.base_type} is not inside a Solid: Webots does not attach it, and its endPoint "
-             "moves on its own (a joint belongs in the children of the Solid it turns against)", node.span)
+             "moves on its own (a joint belongs in the children of the Solid it turns against)", node.span,
+             UNATTACHED_JOINT)
     if isinstance(end, Node) and end.is_a("Solid"):
         builder.add_solid(end, body, frame, None, dynamic)
 
