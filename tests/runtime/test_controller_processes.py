@@ -75,6 +75,20 @@ def test_flat_layout_and_keys_replayed_at_their_times(tmp_path):
     assert "[probe] key 0.304 315" in output
 
 
+def test_a_key_pressed_between_two_keyboard_samples_is_read_at_the_next_one(tmp_path):
+    # The keyboard samples every 64 ms, the world steps 16 ms: a press at 0.1 s (the step ending at 0.112 s)
+    # is still read at 0.128 s, once (Webots reports a key as long as it is down, and a press is down at
+    # least until the keyboard looks).
+    slow = PROBE.replace("keyboard.enable(16)", "keyboard.enable(64)").replace("step(16)", "step(64)")
+    world = _flat(tmp_path, "slow", slow)
+    keys = tmp_path / "keys.txt"
+    keys.write_text("0.1 B\n0.26 C\n0.27 D\n", encoding="utf-8")
+    _, output = _run(world, "--duration", "0.5", "--keys", str(keys))
+    assert "[probe] key 0.128 66" in output
+    assert "[probe] key 0.32 67" in output  # both keys pressed since the 0.256 s sample are down at 0.32 s
+    assert output.count("[probe] key") == 2  # getKey gives one key a call: the probe reads one per step
+
+
 def test_extern_controller_connects_through_the_printed_url(tmp_path):
     world = tmp_path / "w.wbt"
     world.write_text(WORLD.format(controller="<extern>"), encoding="utf-8")

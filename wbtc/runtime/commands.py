@@ -136,8 +136,9 @@ def _robot_command(robot: RobotState, op: str, args: tuple, now: float) -> None:
     elif op == "keyboardEnable":
         robot.keyboard_period = int(args[0])
         robot.keyboard_due = now + robot.keyboard_period if robot.keyboard_period > 0 else math.inf
+        robot.pressed = []
     elif op == "keyboardDisable":
-        robot.keyboard_period, robot.keyboard_due = 0, math.inf
+        robot.keyboard_period, robot.keyboard_due, robot.pressed = 0, math.inf, []
     elif op in ("batterySensorEnable", "batterySensorDisable") and robot.battery is not None:
         robot.battery.enable(int(args[0]) if op == "batterySensorEnable" else 0, now)
 

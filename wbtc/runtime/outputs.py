@@ -2,7 +2,8 @@
 
 - `--keys FILE`: one `time_s key` per line (`#` comments allowed); a key is a character (`a`,
   `A`, `1`), a Webots key name (`UP`, `DOWN`, `LEFT`, `RIGHT`, `HOME`, `END`, `PAGEUP`,
-  `PAGEDOWN`) or an integer code, optionally with `SHIFT+`, `CONTROL+`, `ALT+` prefixes.
+  `PAGEDOWN`) or an integer code, optionally with `SHIFT+`, `CONTROL+`, `ALT+` prefixes. A press is
+  down during the step it falls in and until each robot's keyboard next samples, which reads it once.
 - `--trace FILE.csv`: every robot's pose (world frame, axis-angle) each basic time step.
 """
 

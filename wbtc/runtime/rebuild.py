@@ -111,6 +111,7 @@ def carry_devices(old: RobotState, new: RobotState, sim: Simulation, keep_motion
     new.dead_nodes_seen = old.dead_nodes_seen
     new.announced = old.announced
     new.keyboard_period, new.keyboard_due = old.keyboard_period, old.keyboard_due
+    new.pressed = old.pressed
     if keep_motion:
         new.distance = old.distance
     for tag, sensor in new.sensors.items():

@@ -60,6 +60,7 @@ class RobotState:
     keyboard_period: int = 0
     keyboard_due: float = math.inf
     keys: list[int] | None = None
+    pressed: list[int] = field(default_factory=list)  # keys pressed since the keyboard's last sample
     custom_data: str = ""
     custom_data_pushed: bool = False  # a supervisor wrote customData: the next reply tells the controller
     announced: int | None = None  # how many devices the controller knows (None: no controller has started)
@@ -318,6 +319,8 @@ class Simulation:
             if robot.battery is not None:
                 robot.battery.step(self.data, robot.motors, self.step_ms / 1000.0, robot.entry.name)
                 robot.battery.sample(self.time_ms)
+            if robot.keyboard_period > 0:  # a key pressed between two samples is read at the next one
+                robot.pressed += [key for key in self.keys_down if key not in robot.pressed]
             if robot.battery is None or robot.battery.powered:
                 self._sample(robot)
             pos = self.data.xpos[robot.body].tolist()  # plain floats: math.dist beats numpy on 3 numbers
@@ -334,7 +337,7 @@ class Simulation:
             if motor.feedback_period > 0:
                 motor.sample_feedback(self.data, self.time_ms)
         if self.time_ms + 1e-9 >= robot.keyboard_due:
-            robot.keys = list(self.keys_down)
+            robot.keys, robot.pressed = robot.pressed, []
             robot.keyboard_due += robot.keyboard_period
 
     def laser_spots(self) -> list[tuple[np.ndarray, np.ndarray, float]]:
