@@ -58,18 +58,19 @@ def _blurriness(depth: np.ndarray, distance: float, length: float) -> np.ndarray
     return np.where(depth < distance, front, behind)
 
 
-def _sample(image: np.ndarray, rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
-    """Bilinear samples of `image` (H, W[, C]) at fractional pixel positions, clamped to its edges."""
-    height, width = image.shape[:2]
+def _sample_flat(flat: np.ndarray, shape: tuple[int, int], rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Bilinear samples of an (H, W) image held as (H·W, C) at fractional pixel positions, clamped to its edges.
+
+    The four neighbours are gathered by flat index, every channel at once (the levels and the depth).
+    """
+    height, width = shape
     r = np.clip(rows, 0.0, height - 1.0)
     c = np.clip(cols, 0.0, width - 1.0)
-    r0, c0 = np.floor(r).astype(int), np.floor(c).astype(int)
+    r0, c0 = np.floor(r).astype(np.intp), np.floor(c).astype(np.intp)
     r1, c1 = np.minimum(r0 + 1, height - 1), np.minimum(c0 + 1, width - 1)
-    fr, fc = r - r0, c - c0
-    if image.ndim == 3:
-        fr, fc = fr[..., None], fc[..., None]
-    top = image[r0, c0] * (1 - fc) + image[r0, c1] * fc
-    bottom = image[r1, c0] * (1 - fc) + image[r1, c1] * fc
+    fr, fc = (r - r0)[..., None], (c - c0)[..., None]
+    top = flat.take(r0 * width + c0, axis=0) * (1 - fc) + flat.take(r0 * width + c1, axis=0) * fc
+    bottom = flat.take(r1 * width + c0, axis=0) * (1 - fc) + flat.take(r1 * width + c1, axis=0) * fc
     return top * (1 - fr) + bottom * fr
 
 
@@ -89,13 +90,14 @@ def depth_of_field(levels: np.ndarray, depth: np.ndarray, distance: float, lengt
     rows, cols = np.indices(depth.shape, dtype=np.float64)
     total = np.zeros_like(levels)
     weight = np.zeros(depth.shape)
+    # One flat (pixels, 4) array of the three levels and the depth: each tap gathers both at once.
+    flat = np.concatenate([levels, depth[..., None]], axis=2).reshape(-1, 4)
     for dx, dy in POISSON:
         # Texture coordinates: x to the right, y up; rows from the bottom go up too.
-        tap_rows, tap_cols = rows + dy * radius, cols + dx * radius
-        tap = _sample(levels, tap_rows, tap_cols)
-        tap_blur = _blurriness(_sample(depth, tap_rows, tap_cols), distance, length)
+        tapped = _sample_flat(flat, depth.shape, rows + dy * radius, cols + dx * radius)
+        tap_blur = _blurriness(tapped[..., 3], distance, length)
         factor = np.where(tap_blur >= centre, 1.0, np.abs(tap_blur))
-        total += tap * factor[..., None]
+        total += tapped[..., :3] * factor[..., None]
         weight += factor
     with np.errstate(invalid="ignore", divide="ignore"):
         blurred = total / weight[..., None]
