@@ -55,6 +55,7 @@ class CompileContext:
     options: CompileOptions
     table: DeviceTable = field(default_factory=DeviceTable)
     warnings: list[Diagnostic] = field(default_factory=list)
+    _warned: set[Diagnostic] = field(default_factory=set)
     contact_geoms: list[tuple[mujoco.MjsGeom, Node]] = field(default_factory=list)
     # CadShapes' visual geoms: Webots' infra-red rays pass through them (see wbtc.compile.cad_shape).
     cad_geoms: list[mujoco.MjsGeom] = field(default_factory=list)
@@ -100,7 +101,10 @@ class CompileContext:
 
     def warn(self, message: str, span: Span | None, topic: str | None = None) -> None:
         """Record one warning (`topic`: see `Diagnostic.topic`)."""
-        self.warnings.append(Diagnostic(message, span, severity="warning", topic=topic))
+        diagnostic = Diagnostic(message, span, severity="warning", topic=topic)
+        if diagnostic not in self._warned:  # said once: a node a PROTO repeats (four arena walls) warns alike
+            self._warned.add(diagnostic)
+            self.warnings.append(diagnostic)
 
     def unhonoured(self, node: Node, names: frozenset[str]) -> None:
         """Warn once per (node type, field) for a written field the compiler does not honour yet."""
