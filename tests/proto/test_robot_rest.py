@@ -19,6 +19,8 @@ MOVES = {
     "DARwInOP": "Webots' crouch puts the soles 16 mm into the floor and the robot rocks onto them",
     "RobotisOp2": "Webots' crouch puts the soles 16 mm into the floor and the robot rocks onto them",
     "Mavic2Pro": "its front legs start 4.75 mm in the ground and it tips back onto its body box",
+    "Mir100UltrasonicSensor": "a part of the MiR100: alone its 8.5 g board is centred on its origin, half in "
+                              "the floor, and is pushed out",
     "Pioneer3dx": "its caster is 7.9 mm above the floor: it tips back onto it",
     "Robotino3": "Webots' default puts its wheels 3.85 mm into the floor (about ODE's resting depth)",
     "Spot": "Webots' default leaves its feet 9.7 mm above the floor: it drops onto them and stands",
