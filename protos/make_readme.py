@@ -434,7 +434,7 @@ def render(groups: dict[str, list[Entry]]) -> str:
     out = [INTRO, "## Contents", "", "| PROTO | folder | base node | template | fields |", "|---|---|---|---|---|"]
     for folder, _title in FOLDERS:
         for entry in groups[folder]:
-            anchor = entry.name.lower().replace(" ", "-")
+            anchor = re.sub(r"[^\w\- ]", "", entry.name.lower()).replace(" ", "-")  # as GitHub: "Tiago++" -> "tiago"
             link = f"[{entry.name}](#{anchor})" if folder != "appearances" else entry.name
             out.append(f"| {link} | {folder} | {entry.base} | {template_kind(entry.model)} | {len(entry.fields)} |")
     out += ["", COVERAGE, APPROXIMATIONS]
