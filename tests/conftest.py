@@ -53,6 +53,34 @@ def simulation_of(folder: Path, text: str, name: str = "world.wbt"):
     return Simulation(result, noise=False)
 
 
+def moved(sim, seconds: float = 1.0):
+    """How far (m) each body of a Simulation moves in its first `seconds` (from its compiled pose)."""
+    import mujoco
+    import numpy as np
+
+    mujoco.mj_forward(sim.model, sim.data)
+    start = sim.data.xpos.copy()
+    while sim.time < seconds:
+        sim.step()
+    return np.linalg.norm(sim.data.xpos - start, axis=1)
+
+
+def simulations(folder: Path, header: str):
+    """`make(text)`: a Simulation of `header + text` (a world file each), and `close()` for all of them."""
+    opened = []
+
+    def make(text: str):
+        sim = simulation_of(folder, header + text, f"world{len(opened)}.wbt")
+        opened.append(sim)
+        return sim
+
+    def close() -> None:
+        for sim in opened:
+            sim.close()
+
+    return make, close
+
+
 def project_with_controller(folder: Path, world: str, world_text: str, controller: str, code: str) -> Path:
     """A Webots project in `folder`: worlds/`world` holding `world_text`, controllers/`controller`/ its code."""
     (folder / "controllers" / controller).mkdir(parents=True)

@@ -8,7 +8,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
-from conftest import simulation_of
+from conftest import moved, simulations
 
 HEADER = """#VRML_SIM R2025a utf8
 WorldInfo { basicTimeStep 16 }
@@ -55,27 +55,12 @@ def _extent(geoms, body: int | None = None) -> tuple[np.ndarray, np.ndarray]:
     return np.min([lo for lo, _ in chosen], axis=0), np.max([hi for _, hi in chosen], axis=0)
 
 
-def _run(sim, seconds: float = 1.0) -> np.ndarray:
-    """How far (m) each body moved in `seconds`."""
-    mujoco.mj_forward(sim.model, sim.data)
-    start = sim.data.xpos.copy()
-    while sim.time < seconds:
-        sim.step()
-    return np.linalg.norm(sim.data.xpos - start, axis=1)
-
 
 @pytest.fixture
 def world(tmp_path: Path):
-    opened = []
-
-    def make(text: str):
-        sim = simulation_of(tmp_path, HEADER + text, f"world{len(opened)}.wbt")
-        opened.append(sim)
-        return sim
-
+    make, close = simulations(tmp_path, HEADER)
     yield make
-    for sim in opened:
-        sim.close()
+    close()
 
 
 # Webots' LargeValve: static body box 0.15 m at (-0.02, 0, -0.0085); the wheel (default Physics, density 1000)
@@ -102,7 +87,7 @@ def test_the_large_valve_wheel_weighs_and_spans_as_webots_and_holds_still(world)
     low, high = _extent(geoms, wheel)
     assert [low[0], high[0]] == pytest.approx([0.0975, 0.125], abs=0.002)
     assert -low[1] == pytest.approx(0.098, abs=0.004) and high[1] == pytest.approx(0.098, abs=0.004)
-    assert np.max(_run(sim)) < 3e-4
+    assert np.max(moved(sim)) < 3e-4
 
 
 # Webots' SmallValve: the wheel collides as a cylinder r 0.027, h 0.0138 along x centred at (0.0552, 0, -0.0102).
@@ -112,7 +97,7 @@ def test_the_small_valve_wheel_is_webots_cylinder(world):
     low, high = _extent(_geoms(sim), wheel)
     np.testing.assert_allclose(low, [0.0552 - 0.0069, -0.027, 0.077 - 0.0102 - 0.027], atol=1e-4)
     np.testing.assert_allclose(high, [0.0552 + 0.0069, 0.027, 0.077 - 0.0102 + 0.027], atol=1e-4)
-    assert np.max(_run(sim)) < 3e-4
+    assert np.max(moved(sim)) < 3e-4
 
 
 # Webots' LeverValve (scale 0.7): static body box (0.35, 0.29, 0.3) x scale at (-0.04, 0, -0.02) x scale; the lever
@@ -137,7 +122,7 @@ def test_the_lever_valve_body_box_and_its_turning_lever(world):
     lever_low, lever_high = _extent(geoms, lever)
     assert lever_high[2] == pytest.approx(0.142 + 0.3561 * s + 0.0262 * s, abs=1e-4)  # top of the ball
     assert lever_low[2] == pytest.approx(0.142 - 0.0194 * s - 0.05 * s, abs=1e-4)  # bottom of the disc
-    assert np.max(_run(sim)) < 3e-4
+    assert np.max(moved(sim)) < 3e-4
 
 
 # Webots' SquareManhole: boundingObject USE of the Shape's Box (size 1 1 0.1) centred on the origin.
@@ -150,7 +135,7 @@ def test_the_manhole_is_a_centred_box_and_carries_a_box(world):
     low, high = _extent([g for g in _geoms(sim) if g[0] != cube])
     np.testing.assert_allclose(low, [-0.5, -0.5, -0.05], atol=1e-6)
     np.testing.assert_allclose(high, [0.5, 0.5, 0.05], atol=1e-6)
-    _run(sim)
+    moved(sim)
     assert sim.data.xpos[cube][2] == pytest.approx(0.05 + 0.025, abs=1e-3)
 
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import mujoco
 import numpy as np
 import pytest
-from conftest import simulation_of
+from conftest import moved, simulations
 
 from wbtc.runtime.devices import Camera
 
@@ -53,27 +53,12 @@ def _extent(geoms) -> tuple[np.ndarray, np.ndarray]:
     return np.min([lo for _, lo, _ in geoms], axis=0), np.max([hi for _, _, hi in geoms], axis=0)
 
 
-def _moved(sim, seconds: float = 1.0) -> np.ndarray:
-    """How far (m) each body moved in `seconds`."""
-    mujoco.mj_forward(sim.model, sim.data)
-    start = sim.data.xpos.copy()
-    while sim.time < seconds:
-        sim.step()
-    return np.linalg.norm(sim.data.xpos - start, axis=1)
-
 
 @pytest.fixture
 def world(tmp_path: Path):
-    opened = []
-
-    def make(text: str):
-        sim = simulation_of(tmp_path, HEADER + text, f"world{len(opened)}.wbt")
-        opened.append(sim)
-        return sim
-
+    make, close = simulations(tmp_path, HEADER)
     yield make
-    for sim in opened:
-        sim.close()
+    close()
 
 
 def _body(sim, name: str) -> int:
@@ -182,7 +167,7 @@ def test_a_gear_without_density_or_bounding_object_is_only_drawn(world):
 def test_each_object_rests_on_the_floor(world, node):
     sim = world("DEF OBJ " + node + "\n")
     assert sim.model.body_mass[_body(sim, "OBJ")] > 0
-    assert np.max(_moved(sim)) < 3e-4
+    assert np.max(moved(sim)) < 3e-4
 
 
 # A camera with recognition reports the jam jar and the biscuit box with their model names and recognition
