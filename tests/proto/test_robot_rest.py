@@ -30,6 +30,7 @@ MOVES = {
     "TiagoLite": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth)",
     "TiagoIron": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth), as TiagoLite",
     "TiagoSteel": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth), as TiagoLite",
+    "TiagoTitanium": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth), as TiagoLite",
     "Tiago++": "Webots' default puts it 3.5 mm into the floor (about ODE's resting depth), as TiagoLite",
     "TiagoBody": "a part of TIAGo placed for its base's body slot: alone it falls",
     "TinkerbotsBase": "the 4 cm block is centred on its origin, half in the floor at Webots' default",
