@@ -357,6 +357,22 @@ def test_endless_loop_is_stopped(monkeypatch: pytest.MonkeyPatch):
     assert js("%<= 6 * 7 >%")[0] == "42"
 
 
+def test_output_of_many_pieces_takes_time_in_proportion(monkeypatch: pytest.MonkeyPatch):
+    # A long Road with crash barriers writes a few hundred thousand numbers. Appending each one to
+    # a growing string copied the whole text every time (QuickJS): minutes, past the time limit.
+    monkeypatch.setattr(template_js, "TIME_LIMIT", 10.0)
+    count = 150_000
+    loop = "%< for (let i = 0; i < " + str(count) + "; ++i) { >%%<= i * 0.5 >% -0.123456 %< } >%"
+    body = "{\n  point [\n    " + loop + "\n  ]\n}"
+    started = time.perf_counter()
+    text, console = js(body)
+    assert time.perf_counter() - started < 10
+    assert console == []
+    numbers = text.split()[3:-2]
+    assert len(numbers) == 2 * count
+    assert numbers[:4] == ["0", "-0.123456", "0.5", "-0.123456"] and numbers[-2] == str((count - 1) * 0.5)
+
+
 # ---- what is (not) a template, line map, threads -------------------------------------------
 
 

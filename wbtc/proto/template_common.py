@@ -294,7 +294,7 @@ def line_map(segments: list[int], text: str, source_map: SourceMap) -> list[int]
             continue
         is_text = line > 0
         line = abs(line)
-        # Output that template code appended without markers (e.g. to ___vrml directly) shows up
+        # Output that template code appended without markers (e.g. to ___out directly) shows up
         # as missing line starts: give them the last known line.
         expected = before + (0 if starts_line else 1)
         while len(lines) < expected:

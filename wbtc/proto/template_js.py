@@ -2,11 +2,15 @@
 
 How a body becomes JavaScript, after Webots' ``WbTemplateEngine::generateJavascript``:
 
-* plain text is appended as a template literal, ``___vrml += render(`...`);`` -- so, exactly as
+* plain text is appended as a template literal, ``___out.push(render(`...`));`` -- so, exactly as
   in Webots, ``${...}`` in the VRML text is interpolated and backslash escapes are processed
   (wbtc only escapes backquotes, which would end the literal);
 * ``%<= expr >%`` becomes ``___tmp = expr;`` followed by appending ``___tmp``, i.e. the value's
   JavaScript string form (``0.1 + 0.2`` -> ``0.30000000000000004``, ``true`` -> ``true``);
+* the pieces are collected in an array and joined once at the end (Webots appends to a string,
+  ``___vrml += ...``: the text is the same, but QuickJS copies the whole string at every append,
+  which made a template with a few hundred thousand pieces, a 2 km road with crash barriers, run
+  for minutes);
 * ``%< code >%`` is inserted as is, except ``import`` statements, which are hoisted.
 
 Every append also goes through ``__wbmark``, which records the template line of the piece for
@@ -233,19 +237,19 @@ class JsEngine:
             # __wbmark(value, line) records where the piece comes from (for the line map) and
             # returns the value's string form, so the appends produce what Webots' produce.
             if chunk.kind == "text":
-                pieces.append(f"___vrml += __wbmark(render(`{_escape_backquotes(chunk.text)}`), {line});")
+                pieces.append(f"___out.push(__wbmark(render(`{_escape_backquotes(chunk.text)}`), {line}));")
             elif chunk.kind == "expr":
                 # Same shape as Webots' `___tmp = expr; ___vrml += eval("___tmp");` (a comma
                 # expression assigns its first operand, as there).
-                pieces.append(f"___tmp = {chunk.text}; ___vrml += __wbmark(___tmp, {-line});")
+                pieces.append(f"___tmp = {chunk.text}; ___out.push(__wbmark(___tmp, {-line}));")
             else:
                 code = self._hoist_imports(chunk, imports, source_map, proto_path)
                 pieces.append(code)
         body = "".join(pieces)
         header = ("(function __wbtemplate(__wbfields, __wbcontext, __wbimport, render) {'use strict'; "
                   "const fields = __wbfields; const context = __wbcontext; "
-                  "let ___vrml = ''; let ___tmp; " + " ".join(imports) + " ")
-        source = header + body + "\nreturn ___vrml;\n})"
+                  "const ___out = []; let ___tmp; " + " ".join(imports) + " ")
+        source = header + body + "\nreturn ___out.join('');\n})"
         return source, "wbfile" in body
 
     def _hoist_imports(self, chunk: Chunk, imports: list[str], source_map: SourceMap,
