@@ -13,6 +13,7 @@ from typer.testing import CliRunner
 
 from wbtc.cli import app
 from wbtc.resources import child_path
+from wbtc.runtime import controllers
 
 WORLD = """#VRML_SIM R2023b utf8
 WorldInfo {{
@@ -168,3 +169,33 @@ def test_an_unreadable_frame_cuts_its_controller_off_and_the_run_goes_on(tmp_pat
     data, output = _run(world, "--duration", "0.2")
     assert "[probe] wbtc: the controller sent a message that is not plain data" in output
     assert data["sim_time"] == pytest.approx(0.208) and data["robots"][0]["status"] in ("exited", "crashed")
+
+
+def test_runtime_ini_is_read_with_webots_syntax(tmp_path, monkeypatch):
+    # Webots' runtime.ini: `;` comments, `$(NAME)` references to the environment and to the variables
+    # set above, quoted values, section names in any case, this platform's section only. An empty
+    # reference in a path list leaves no empty entry.
+    (tmp_path / "runtime.ini").write_text(
+        "; a comment line\n"
+        "[environment variables with paths]  ; the paths\n"
+        "LIBS = $(HOME_OF_LIBS)/libraries     ; where they are\n"
+        "WEBOTS_LIBRARY_PATH = $(LIBS)/python:$(NOT_SET_ANYWHERE)\n"
+        "PYTHONPATH = $(PYTHONPATH):../../lib\n"
+        "[environment variables]\n"
+        'QUOTED = "a;b"  ; kept whole\n'
+        "[Environment Variables for Linux]\n"
+        "ONLY_LINUX = yes\n"
+        "[environment variables for Windows]\n"
+        "ONLY_WINDOWS = yes\n"
+        "[python]\n"
+        "OPTIONS = -u\n", encoding="utf-8")
+    monkeypatch.setenv("HOME_OF_LIBS", "/opt/x")
+    monkeypatch.setenv("PYTHONPATH", "")
+    monkeypatch.delenv("NOT_SET_ANYWHERE", raising=False)
+    command, env = controllers._runtime_ini(tmp_path)
+    assert command is None
+    expected = {"LIBS": "/opt/x/libraries", "WEBOTS_LIBRARY_PATH": "/opt/x/libraries/python",
+                "PYTHONPATH": "../../lib", "QUOTED": "a;b"}
+    if sys.platform.startswith("linux"):
+        expected["ONLY_LINUX"] = "yes"
+    assert env == expected

@@ -8,14 +8,22 @@ beside the world). It runs in its own process with the user's Python (the one ru
 inherited socket (see `wbtc._child.controller.wire`). Output is forwarded line by line, prefixed
 with the robot's name.
 
-Not honoured yet: controllers in other languages, `runtime.ini` sections other than
-`[environment variables]`, `[environment variables with paths]` and `[python]`.
+A controller's `runtime.ini` is read as Webots reads it: `;` starts a comment (outside a
+double-quoted value), `$(NAME)` in a value is the value of NAME in the environment built so far
+(empty if unset; in a path section, the `::` and the leading or trailing `:` that an empty one
+leaves are dropped), and the variables of `[environment variables with paths]` (or its old name
+`... with relative paths`), `[environment variables]` and this platform's
+`[environment variables for Linux]` / `... for Linux 64` (`... for macOS`, `... for Windows`) are
+set in the order they come.
+
+Not honoured yet: controllers in other languages, the `[java]` and `[matlab]` sections, the
+separators Windows uses in path sections.
 """
 
 from __future__ import annotations
 
-import configparser
 import os
+import re
 import shlex
 import socket
 import subprocess
@@ -72,24 +80,90 @@ def find_controller(world: Path, name: str) -> Path | None:
     return next((c for c in candidates if c.is_file()), None)
 
 
+def _ini_entries(ini: Path) -> list[tuple[str, str, str]] | None:
+    """(section in lower case, key, value) of each definition of a runtime.ini, in file order.
+
+    Webots' rules: lines starting with `;` are comments; `[name]` (up to a `;`) opens a section;
+    `key = value` defines a key, the value cut at its first `;` unless it starts with a double quote
+    (then the quotes go and what they hold is kept); a `;` before the `=` makes the file invalid (None).
+    """
+    entries = []
+    section = ""
+    for raw in ini.read_text(encoding="utf-8", errors="replace").splitlines():
+        line = raw.strip()
+        if line.startswith(";"):
+            continue
+        if line.startswith("["):
+            section = line.split(";")[0].replace("[", "").replace("]", "").strip().lower()
+        elif "=" in line:
+            equal = line.index("=")
+            if ";" in line[:equal]:
+                return None
+            value = line[equal + 1:].strip()
+            if value.startswith('"'):
+                comment, quote = value.rfind(";"), value.rfind('"')
+                if quote > 0:
+                    value = value[1:comment].strip()[:-1] if comment > quote else value[1:quote]
+            elif ";" in value:
+                value = value[:value.index(";")]
+            entries.append((section, line[:equal].strip(), value.strip()))
+    return entries
+
+
+_INI_REFERENCE = re.compile(r"\$\(([^)]*)\)")
+_PATH_SECTIONS = ("environment variables with paths", "environment variables with relative paths")
+
+
+def _platform_sections() -> tuple[str, ...]:
+    if sys.platform == "win32":
+        return ("environment variables for windows",)
+    if sys.platform == "darwin":
+        return ("environment variables for mac os x", "environment variables for macos")
+    return ("environment variables for linux",
+            "environment variables for linux 64" if sys.maxsize > 2**32 else "environment variables for linux 32")
+
+
+def _ini_value(value: str, environment: dict[str, str], path: bool) -> str:
+    """`value` with each `$(NAME)` replaced by NAME's value in `environment` (see the module docstring)."""
+    def replace(match: re.Match[str]) -> str:
+        return environment.get(match.group(1), "")
+
+    if "$(" not in value:
+        return value
+    value = _INI_REFERENCE.sub(replace, value)
+    if path:
+        value = value.replace("::", ":")
+        value = value[1:] if value.startswith(":") else value
+        value = value[:-1] if value.endswith(":") else value
+    return value
+
+
 def _runtime_ini(folder: Path) -> tuple[list[str] | None, dict[str, str]]:
-    """The python command and environment a controller's runtime.ini asks for."""
+    """The python command and the environment variables a controller's runtime.ini asks for.
+
+    Values refer to wbtc's own environment and to the variables set before them.
+    """
     ini = folder / "runtime.ini"
     env: dict[str, str] = {}
     if not ini.is_file():
         return None, env
-    parser = configparser.ConfigParser(strict=False, interpolation=None)
-    parser.optionxform = str  # type: ignore[assignment,method-assign]  # keep variable names' case
-    parser.read(ini, encoding="utf-8")
-    for section in ("environment variables with paths", "environment variables"):
-        if parser.has_section(section):
-            for key, value in parser.items(section):
-                env[key] = os.path.expandvars(value.strip('"'))
+    entries = _ini_entries(ini)
+    if entries is None:
+        print(f"Warning: {folder.name}: environment variables from runtime.ini could not be loaded: "
+              "the file contains illegal definitions.", file=sys.stderr)
+        return None, env
+    known = dict(os.environ)
+    setting = (*_PATH_SECTIONS, "environment variables", *_platform_sections())
+    python: dict[str, str] = {}
+    for section, key, raw in entries:
+        value = _ini_value(raw, known, section in _PATH_SECTIONS)
+        if section in setting:
+            env[key] = known[key] = value
+        elif section == "python" and key in ("COMMAND", "OPTIONS"):
+            python[key] = value
     command = None
-    if parser.has_section("python") and parser.has_option("python", "COMMAND"):
-        command = shlex.split(parser.get("python", "COMMAND"))
-        if parser.has_option("python", "OPTIONS"):
-            command += shlex.split(parser.get("python", "OPTIONS"))
+    if "COMMAND" in python:
+        command = shlex.split(python["COMMAND"]) + shlex.split(python.get("OPTIONS", ""))
     return command, env
 
 
