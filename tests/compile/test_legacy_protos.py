@@ -1,10 +1,15 @@
 """Library robots and floors in worlds written before R2022a (RUB PROTOs then, FLU ones in wbtc's library)."""
 
+import math
+
 import numpy as np
 import pytest
 from conftest import simulation_of
 
+from wbtc.proto.expand import expand_scene
 from wbtc.runtime import poses
+from wbtc.scene import build_scene
+from wbtc.vrml import parse_text
 
 # An R2021b world in NUE axes (x north, y up, z east), as Webots wrote them: the E-puck was RUB
 # (x right, y up, z back), turned a quarter turn about the world's up; its turret holds a 5 cm mast
@@ -167,4 +172,108 @@ DifferentialWheels {
     # 0.16 rad above the horizon.
     assert right[:, 0] == pytest.approx([0.0, np.cos(0.16), np.sin(0.16)], abs=1e-6)
     assert sensors["ps0"].kind == "infra-red"  # the e-puck's, with its lookup table
+    simulation.close()
+
+
+def _collision_boxes(simulation, prefix: str) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    """Centre, half extents and long axis (world axes) of every collision box of the bodies named `prefix`..."""
+    out = {}
+    for geom in range(simulation.model.ngeom):
+        body = simulation.model.body(simulation.model.geom_bodyid[geom]).name
+        box = simulation.model.geom_type[geom] == 6 and simulation.model.geom_group[geom] == 3
+        if not body.startswith(prefix) or not box:
+            continue
+        axes = simulation.from_model @ simulation.data.geom_xmat[geom].reshape(3, 3)
+        size = simulation.model.geom_size[geom]
+        out[body] = (simulation.from_model @ simulation.data.geom_xpos[geom], np.abs(axes) @ size,
+                     axes[:, int(np.argmax(size))])
+    return out
+
+
+def test_an_old_world_thymio_looks_along_its_old_z(tmp_path):
+    # Webots' Thymio2 looked along +z with its left wheel on +x until R2021b (its R2019 PROTO:
+    # "prox.horizontal.2" at z = +0.0816, "motor.left" at x = +0.05). The maze-runner benchmark
+    # (R2020b) turns it half a turn about y to face the maze, along -z.
+    world = """#VRML_SIM R2020b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Floor {
+}
+Thymio2 {
+  translation 0 0 0.28
+  rotation 0 1 0 3.14159265
+  controller "<none>"
+}
+"""
+    simulation = simulation_of(tmp_path, world, "maze.wbt")
+    axes = simulation.from_model @ simulation.data.xmat[simulation.robots[0].body].reshape(3, 3)
+    assert axes[:, 0] == pytest.approx([0, 0, -1], abs=1e-5)  # forward
+    assert axes[:, 1] == pytest.approx([-1, 0, 0], abs=1e-5)  # left
+    assert axes[:, 2] == pytest.approx([0, 1, 0], abs=1e-5)  # up
+    simulation.close()
+
+
+def test_old_linked_walls_run_along_z_and_old_maze_blocks_along_x(tmp_path):
+    # Webots' R2020b LinkedWalls (wall-following benchmark): segments `length` long along z, `height` high
+    # along y, 1 cm thick, the next one turned about y by angle x pi/24 (a positive turn bends towards +x).
+    # Its MazeBlock (maze-runner benchmark): `length` along x, 6.5 cm high along y, 1.5 cm thick along z.
+    world = """#VRML_SIM R2020b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+DEF WALL LinkedWalls {
+  translation 5 0.25 0
+  angles [ 0 0 2 ]
+}
+MazeBlock {
+  translation 0.36 0.6 0.155
+  length 0.2
+}
+"""
+    simulation = simulation_of(tmp_path, world, "walls.wbt")
+    walls = _collision_boxes(simulation, "robot/")
+    centre, half, along = walls["robot/solid"]
+    assert centre == pytest.approx([5, 0.25, 0], abs=1e-9)
+    assert half == pytest.approx([0.005, 0.25, 0.5], abs=1e-9)
+    assert walls["robot/wall 2"][0] == pytest.approx([5, 0.25, 2], abs=1e-9)
+    turn = math.pi / 12
+    centre, _, along = walls["robot/wall 3"]
+    assert centre == pytest.approx([5 + 0.5 * math.sin(turn), 0.25, 2.5 + 0.5 * math.cos(turn)], abs=1e-9)
+    assert abs(along @ [math.sin(turn), 0, math.cos(turn)]) == pytest.approx(1, abs=1e-9)
+    centre, half, _ = _collision_boxes(simulation, "maze block")["maze block"]
+    assert centre == pytest.approx([0.36, 0.6 + 0.0325, 0.155], abs=1e-9)
+    assert half == pytest.approx([0.1, 0.0325, 0.0075], abs=1e-9)
+    simulation.close()
+
+
+def test_an_old_world_road_follows_its_way_points_in_the_old_axes(tmp_path):
+    # Before R2022a a Road's way-points were (x, height, z) and `startingAngle` was minus the heading
+    # measured from x towards z. This road runs along the old x; it starts turned 0.5 rad towards +z,
+    # so its first cross-section (7 m wide) lies along (-sin 0.5, cos 0.5) in the old x-z plane.
+    world = """#VRML_SIM R2020b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Road {
+  wayPoints [ 0 0 0, 10 0 0 ]
+  splineSubdivision 0
+  startingAngle [ -0.5 ]
+  rightBarrier TRUE
+  dashedLine [ FALSE ]
+}
+"""
+    path = tmp_path / "road.wbt"
+    path.write_text(world, encoding="utf-8")
+    scene, expansion = expand_scene(build_scene(parse_text(world, str(path))), strict=True)
+    surface = scene.nodes[1].get("children")[1].get("geometry")
+    points = [(p.x, p.y, p.z) if hasattr(p, "x") else tuple(p) for p in surface.get("coord").get("point")]
+    # wbtc's Road is drawn in its own (FLU) axes, turned onto the old ones: old (x, y, z) = new (x, z, -y).
+    old = [(x, z, -y) for x, y, z in points]
+    edge = 3.5 * np.array([-math.sin(0.5), 0, math.cos(0.5)])
+    assert np.array(sorted(old[:2])) == pytest.approx(np.array(sorted([tuple(edge), tuple(-edge)])), abs=1e-6)
+    assert max(x for x, _, _ in old) == pytest.approx(10, abs=1e-6)  # it ends 10 m along x, on the ground
+    assert [y for _, y, _ in old] == pytest.approx([0] * len(old), abs=1e-6)
+    # And the model compiles: the crash barrier's blocks are boxes lying along x, not flat along y.
+    simulation = simulation_of(tmp_path, world, "road2.wbt")
     simulation.close()

@@ -144,6 +144,15 @@ def test_a_road_still_reads_its_road_line_fields(tmp_path: Path):
     assert sorted(np.round(verts.max(axis=0) - verts.min(axis=0), 3)) == pytest.approx([0, 0.3, 10], abs=0.01)
 
 
+def test_an_old_world_road_may_still_set_dashed_line(tmp_path: Path):
+    # Webots kept the R2018c field `dashedLine` as a hidden field; old worlds (Webots' own R2020b
+    # highway_driving benchmark) still set it. It changes nothing: the default RoadLine is drawn.
+    model = compiled(tmp_path, "Road {\n  wayPoints [ 0 0 0, 10 0 0 ]\n  dashedLine [ FALSE ]\n}\n")
+    white = [g for g in range(model.ngeom) if model.geom_type[g] == mujoco.mjtGeom.mjGEOM_MESH
+             and np.allclose(model.geom_rgba[g][:3], [1, 1, 1])]
+    assert len(white) == 1
+
+
 def test_traffic_light_lamp_is_a_sphere_of_0_09_m(tmp_path: Path):
     # Webots' TrafficLightStandardLampGeometry: Sphere { radius 0.09 }.
     text = HEADER + "Shape {\n  geometry TrafficLightStandardLampGeometry {\n  }\n}\n"

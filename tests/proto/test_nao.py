@@ -213,3 +213,32 @@ Nao {
         assert torso == pytest.approx([0.2, 0.5, 0.334], abs=0.003)
     finally:
         simulation.close()
+
+
+def test_an_old_nue_world_nao_at_its_default_rotation_faces_the_old_x(tmp_path: Path):
+    """Before R2022a the NAO was built z-up and stood up by its default rotation `1 0 0 -1.5708`.
+
+    Webots' R2020b humanoid-sprint world leaves it there and its 10 m track runs along +x: the robot
+    looks along the old x, its left along the old -z, its up along the old y.
+    """
+    old = """#VRML_SIM R2020b utf8
+WorldInfo {
+  coordinateSystem "NUE"
+}
+Floor {
+  size 4 4
+}
+Nao {
+  translation -1 0.334 0
+  controller "<none>"
+}
+"""
+    simulation = simulation_of(tmp_path, old, "sprint.wbt")
+    try:
+        entry = simulation.table.robots[0]
+        axes = simulation.from_model @ simulation.data.xmat[simulation.model.body(entry.body).id].reshape(3, 3)
+        assert axes[:, 0] == pytest.approx([1, 0, 0], abs=1e-5)
+        assert axes[:, 1] == pytest.approx([0, 0, -1], abs=1e-5)
+        assert axes[:, 2] == pytest.approx([0, 1, 0], abs=1e-5)
+    finally:
+        simulation.close()

@@ -116,8 +116,8 @@ def add_device(node: Node, body: mujoco.MjsBody, robot: RobotEntry, ctx: Compile
     site.quat = quat_mul(at.quat, turn) if turn is not None else at.quat
     if robot.rub and kind in _AXIS_DEVICES and not ctx.legacy_axes(node):
         # A library robot in a pre-R2022a world: its IMU, accelerometer, gyro and compass read along
-        # the RUB axes its PROTO had then (see legacy_protos).
-        site.quat = quat_mul(site.quat, legacy_protos.RUB_IN_FLU)
+        # the axes its PROTO had then, RUB for most (see legacy_protos).
+        site.quat = quat_mul(site.quat, legacy_protos.back_turn(robot))
     entry = DeviceEntry(name=name, type=kind, node=node, fields=plain_fields(node), body=body.name, site=site.name)
     if kind in CAMERA_DEVICES:
         entry.camera = _camera(node, body, ctx, at, own if frame is not None else body.name)

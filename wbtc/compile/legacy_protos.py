@@ -9,7 +9,14 @@ later instanced in a file from before R2022a:
 - the robot's own frame gets the rotation taking FLU axes onto RUB ones (120 degrees about
   (−1, 1, 1)/√3: forward → −z, left → −x, up → +y), after its translation and rotation;
 - the nodes the old file puts inside it (slot contents) get the opposite rotation before their own
-  pose, and any PROTO of R2022a or later instanced there gets the first one again.
+  pose, and any PROTO of R2022a or later instanced there gets its own one again.
+
+A few PROTOs had other old axes (`OLD_AXES`): the Thymio II looked along +z with its left on +x
+(Webots' R2019 Thymio2: "prox.horizontal.2" at z = +0.08, "motor.left" at x = +0.05); the
+wall-following benchmark's LinkedWalls ran its chain along +z and bent it towards +x at a positive
+turn; the maze-runner benchmark's MazeBlock was `length` long along x, 6.5 cm high along y and
+1.5 cm thick along z. They get the rotation taking FLU axes onto those (a robot's slot contents its
+inverse). Such an object keeps its `size` as written (none of them has one).
 
 A few PROTOs were built along z already (`Z_UP_BEFORE`): they are left as they are.
 
@@ -25,7 +32,9 @@ The robot's own InertialUnit, Accelerometer, Gyro and Compass read along those R
 (`wbtc.compile.device` turns their sites).
 
 Not honoured yet: an object's heading (Webots' converter turned some objects by a quarter or half turn
-about the vertical as well), object fields other than `size` that name axes.
+about the vertical as well) beyond the `OLD_AXES` ones, object fields other than `size` (and a Road's
+`wayPoints`, `startingAngle` and `endingAngle`, see `wbtc.proto.expand`) that name axes; an old PROTO
+file whose root is an R2022a+ library robot (it is left unturned).
 """
 
 from __future__ import annotations
@@ -44,11 +53,20 @@ from wbtc.vrml.header import before_r2022a
 FLU_IN_RUB = axis_angle_quat((-1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), 2 * math.pi / 3)
 RUB_IN_FLU = quat_conj(FLU_IN_RUB)
 #: Webots PROTOs that were already built along z before R2022a (old worlds turned them themselves:
-#: Webots' R2020 Mavic world gives its drone `rotation 0 -0.707 -0.707 -3.14159`; the youBot's old
-#: default rotation was `1 0 0 -1.5708`, which wbtc's Youbot template restores in NUE worlds).
-Z_UP_BEFORE = frozenset({"Mavic2Pro", "Youbot"})
+#: Webots' R2020 Mavic world gives its drone `rotation 0 -0.707 -0.707 -3.14159`; the youBot's and
+#: the NAO's old default rotation was `1 0 0 -1.5708`, which wbtc's Youbot and Nao templates restore
+#: in NUE worlds: Webots' R2020b humanoid-sprint world leaves its NAO at that default, facing +x
+#: down the track).
+Z_UP_BEFORE = frozenset({"Mavic2Pro", "Youbot", "Nao"})
 #: An object's up (z) onto the old y, x kept: a quarter turn about x.
 UP_IN_OLD = axis_angle_quat((1.0, 0.0, 0.0), -math.pi / 2)
+#: FLU axes onto the Thymio II's old ones: x (forward) → +z, y (left) → +x, z (up) → +y.
+FLU_IN_LUF = axis_angle_quat((1 / math.sqrt(3), 1 / math.sqrt(3), 1 / math.sqrt(3)), -2 * math.pi / 3)
+#: FLU axes onto the old LinkedWalls' ones: x → −x, y (along the chain) → +z, z (up) → +y.
+FLU_IN_OLD_WALLS = axis_angle_quat((0.0, 1 / math.sqrt(2), 1 / math.sqrt(2)), math.pi)
+#: PROTOs whose axes before R2022a were neither RUB (robots) nor the objects' up-along-y ones: the
+#: rotation taking their FLU axes onto the old ones (a MazeBlock's length, y now, lay along the old x).
+OLD_AXES = {"Thymio2": FLU_IN_LUF, "LinkedWalls": FLU_IN_OLD_WALLS, "MazeBlock": FLU_IN_LUF}
 
 
 def _legacy_file(ctx: CompileContext, path: str) -> bool:
@@ -58,9 +76,9 @@ def _legacy_file(ctx: CompileContext, path: str) -> bool:
 def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.ndarray | None:
     """The rotation after its own pose for the root of an R2022a+ PROTO instanced in an older file.
 
-    `FLU_IN_RUB` for a robot (and for such a PROTO inside a robot that was turned), `UP_IN_OLD` for
-    anything else, None when the PROTO is not R2022a+ or the instance is not older (see the module
-    docstring).
+    The PROTO's `OLD_AXES` entry if it has one, else `FLU_IN_RUB` for a robot and for such a PROTO
+    inside a robot that was turned, `UP_IN_OLD` for anything else; None when the PROTO is not
+    R2022a+ or the instance is not older (see the module docstring).
     """
     instance = node.proto
     if instance is None or not _legacy_file(ctx, str(instance.span.file)):
@@ -69,6 +87,8 @@ def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.n
         return None  # a PROTO from before R2022a: RUB inside, as the old file expects
     if instance.name in Z_UP_BEFORE:
         return None
+    if instance.name in OLD_AXES:
+        return OLD_AXES[instance.name]
     if node.is_a("Robot") or (robot is not None and robot.rub):
         return FLU_IN_RUB
     return UP_IN_OLD
@@ -77,11 +97,16 @@ def root_turn(ctx: CompileContext, node: Node, robot: RobotEntry | None) -> np.n
 def turns_content(ctx: CompileContext, owner: Node | None, child: Node, robot: RobotEntry | None) -> bool:
     """True for a node of an older file in a node of a turned robot's R2022a+ PROTO (a slot's content).
 
-    Its parent frame gets `RUB_IN_FLU` before its own pose.
+    Its parent frame gets `back_turn(robot)` before its own pose.
     """
     if robot is None or not robot.rub or owner is None:
         return False
     return _legacy_file(ctx, str(child.span.file)) and not _legacy_file(ctx, str(owner.span.file))
+
+
+def back_turn(robot: RobotEntry) -> np.ndarray:
+    """The rotation from a turned robot's FLU axes back to its old ones (`RUB_IN_FLU` for most)."""
+    return quat_conj(robot.old_axes) if robot.old_axes is not None else RUB_IN_FLU
 
 
 def identity() -> np.ndarray:

@@ -147,7 +147,7 @@ class BodyBuilder:
             if isinstance(child, Node):
                 # A pre-R2022a world's node in a library robot's slot: RUB axes, as it was written for.
                 turned = legacy_protos.turns_content(self.ctx, owner, child, robot)
-                inner = frame.compose(np.zeros(3), legacy_protos.RUB_IN_FLU) if turned else frame
+                inner = frame.compose(np.zeros(3), legacy_protos.back_turn(robot)) if turned else frame
                 self.walk(child, body, inner, robot, dynamic)
 
     def add_shape(self, shape: Node, body: mujoco.MjsBody, frame: Frame, name: str | None = None) -> list[str]:
@@ -227,6 +227,7 @@ class BodyBuilder:
         if node.is_a("Robot"):
             robot = device.add_robot(node, body, ctx)
             robot.rub = turn is not None
+            robot.old_axes = turn
             if top_level:
                 robot.drive = find_drive(node)
         # Old Solids had a `scale` field (graphics only); it scales what the Solid holds.

@@ -101,6 +101,7 @@ class RobotEntry:
     model: str
     devices: list[DeviceEntry] = field(default_factory=list)
     rub: bool = False  # an R2022a+ PROTO robot placed by an older file (see compile.legacy_protos)
+    old_axes: np.ndarray | None = None  # then the rotation (w, x, y, z) taking its FLU axes onto its old ones
     drive: KinematicDrive | None = None  # wheels that move a robot without Physics (compile.kinematic_drive)
     legacy: dict[str, Any] = field(default_factory=dict)  # a DifferentialWheels' controller-side fields
 

@@ -137,7 +137,7 @@ class Expander:
         proto_resolver = self.resolver_for(model)
         values, defaults = self._values(node, model, resolver, proto_resolver)
         _bind_defaults(node, model, values)
-        self._old_size(node, model, source, values)
+        self._old_fields(node, model, source, values)
         fields = self._template_fields(model, values, defaults, resolver) if model.is_template else None
         for name, value in values.items():
             if model.fields[name].has_nodes:
@@ -216,17 +216,27 @@ class Expander:
                 values[name] = defaults[name]
         return values, defaults
 
-    def _old_size(self, node: Node, model: ProtoModel, source: ProtoSource, values: dict[str, Any]) -> None:
-        """An object of R2022a+ written in an older file: its `size` (x, height, z) becomes (x, z, height).
+    def _old_fields(self, node: Node, model: ProtoModel, source: ProtoSource, values: dict[str, Any]) -> None:
+        """Fields of an R2022a+ object written in an older file that name axes, in the new axes.
+
+        Its `size` (x, height, z) becomes (x, z, height).
 
         Before R2022a, Webots' objects stood along y; since, along z (see `wbtc.compile.legacy_protos`,
-        which turns the object's frame back). Robots keep their fields.
+        which turns the object's frame back). Robots keep their fields. A Road's `wayPoints` (x, height,
+        z) become (x, −z, height) and its `startingAngle` / `endingAngle` (minus a heading measured
+        from x towards the old z, towards −y now) change sign.
         """
-        interface = model.fields.get("size")
-        if "size" not in node.fields or interface is None or interface.type != "SFVec3f":
-            return
         written = written_version(str(node.span.file), str(self.scene.path), self.scene.version)
         if source.path.parent.name == "robots" or not before_r2022a(written) or before_r2022a(model.version):
+            return
+        if model.name == "Road":
+            if "wayPoints" in node.fields:
+                values["wayPoints"] = [[x, -z, height] for x, height, z in values["wayPoints"]]
+            for name in ("startingAngle", "endingAngle"):
+                if name in node.fields:
+                    values[name] = [-angle for angle in values[name]]
+        interface = model.fields.get("size")
+        if "size" not in node.fields or interface is None or interface.type != "SFVec3f":
             return
         x, height, z = values["size"]
         values["size"] = [x, z, height]
