@@ -16,6 +16,7 @@ from wbtc.scene.model import Node
 if TYPE_CHECKING:
     from wbtc.proto.expand import Expander
     from wbtc.proto.instances import ProtoInstance
+    from wbtc.proto.model import ProtoModel
     from wbtc.proto.resolve import Resolver
 
 _KEYS = {"Vec2f": ("x", "y"), "Vec3f": ("x", "y", "z"), "Color": ("r", "g", "b"), "Rotation": ("x", "y", "z", "a")}
@@ -57,10 +58,7 @@ def _node_value(node: Node, expander: Expander, resolver: Resolver) -> dict[str,
 
     model = load_proto(source.path)
     values, defaults = expander._values(node, model, resolver, expander.resolver_for(model))
-    for name, interface in model.fields.items():
-        fields[name] = {"value": _safe(values[name], interface.type, expander, resolver),
-                        "defaultValue": _safe(defaults[name], interface.type, expander, resolver)}
-    return {"node_name": node.type_name, "fields": fields}
+    return {"node_name": node.type_name, "fields": _proto_fields(model, values, defaults, expander, resolver)}
 
 
 def _instance_value(instance: ProtoInstance, expander: Expander, resolver: Resolver) -> dict[str, Any]:
@@ -68,13 +66,18 @@ def _instance_value(instance: ProtoInstance, expander: Expander, resolver: Resol
     from wbtc.proto.model import load_proto
 
     model = load_proto(instance.source.path)
-    fields: dict[str, Any] = {}
-    for name, interface in model.fields.items():
-        default = expander._default(interface, model, expander.resolver_for(model))
-        value = instance.values.get(name, default)
-        fields[name] = {"value": _safe(value, interface.type, expander, resolver),
-                        "defaultValue": _safe(default, interface.type, expander, resolver)}
-    return {"node_name": instance.name, "fields": fields}
+    defaults = {name: expander._default(interface, model, expander.resolver_for(model))
+                for name, interface in model.fields.items()}
+    values = {name: instance.values.get(name, default) for name, default in defaults.items()}
+    return {"node_name": instance.name, "fields": _proto_fields(model, values, defaults, expander, resolver)}
+
+
+def _proto_fields(model: ProtoModel, values: dict[str, Any], defaults: dict[str, Any], expander: Expander,
+                  resolver: Resolver) -> dict[str, Any]:
+    """A PROTO instance's `fields` as templates see them: each interface field's value and default."""
+    return {name: {"value": _safe(values[name], interface.type, expander, resolver),
+                   "defaultValue": _safe(defaults[name], interface.type, expander, resolver)}
+            for name, interface in model.fields.items()}
 
 
 def _safe(value: Any, field_type: str, expander: Expander, resolver: Resolver) -> Any:

@@ -319,7 +319,7 @@ class Simulation:
             if robot.battery is not None:
                 robot.battery.step(self.data, robot.motors, self.step_ms / 1000.0, robot.entry.name)
                 robot.battery.sample(self.time_ms)
-            if robot.keyboard_period > 0:  # a key pressed between two samples is read at the next one
+            if self.keys_down and robot.keyboard_period > 0:  # a key pressed between samples: read at the next
                 robot.pressed += [key for key in self.keys_down if key not in robot.pressed]
             if robot.battery is None or robot.battery.powered:
                 self._sample(robot)
