@@ -287,29 +287,25 @@ class TouchSensor(Sensor):
         node = entry.node
         self.has_physics = node is not None and isinstance(node.get("physics"), Node)
         self._force = np.zeros(6)
+        #: A bumper's flag: touching at the end of some step since it was last read (wbtc.runtime.bumpers).
+        self.latched = False
 
     def sample(self, sim: Simulation) -> float | list[float]:
         """Contact state or force on the sensor's body."""
-        if self.kind == "bumper" and sim.touched is not None:
-            # Split substeps: what touched in any substep of the step, the last one's contacts included
-            # (see wbtc.runtime.substeps).
-            return 1.0 if self.body in sim.touched else 0.0
+        if self.kind == "bumper":  # Webots clears the flag as it reads it
+            value, self.latched = (1.0 if self.latched else 0.0), False
+            return value
         data, model = sim.data, sim.model
         total = np.zeros(3)
-        touched = False
         for i in range(data.ncon):
             contact = data.contact[i]
             first, second = model.geom_bodyid[contact.geom1], model.geom_bodyid[contact.geom2]
             if self.body not in (first, second) or first == second:
                 continue
-            touched = True
-            if self.kind != "bumper":
-                mujoco.mj_contactForce(model, data, i, self._force)
-                # MuJoCo's contact force acts on geom2, along the frame's normal (geom1 -> geom2).
-                force = contact.frame.reshape(3, 3).T @ self._force[:3]
-                total += force if second == self.body else -force
-        if self.kind == "bumper":
-            return 1.0 if touched else 0.0
+            mujoco.mj_contactForce(model, data, i, self._force)
+            # MuJoCo's contact force acts on geom2, along the frame's normal (geom1 -> geom2).
+            force = contact.frame.reshape(3, 3).T @ self._force[:3]
+            total += force if second == self.body else -force
         if not self.has_physics:
             total[:] = 0.0
         else:

@@ -21,6 +21,7 @@ from wbtc.compile.result import CompileResult
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime import conveyors, substeps, tone, tracks
 from wbtc.runtime.battery import Battery
+from wbtc.runtime.bumpers import Bumpers
 from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
@@ -105,6 +106,7 @@ class Simulation:
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
         self._stops: StopGate | None = None  # the joints with stops, per model (see joint_stops)
+        self._bumpers: Bumpers | None = None  # the bumper TouchSensors, per model (see bumpers)
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
@@ -301,6 +303,10 @@ class Simulation:
         mujoco.mj_comPos(model, data)
         mujoco.mj_camlight(model, data)
         mujoco.mj_comVel(model, data)
+        if self._bumpers is None or self._bumpers.model is not model or self._bumpers.robots is not self.robots:
+            self._bumpers = Bumpers(self)
+        if self._bumpers.sensors:
+            self._bumpers.latch(self)
         self.time_ms += self.step_ms
         if self.packets:
             receivers = [s for r in self.robots for s in r.sensors.values() if isinstance(s, Receiver)]

@@ -70,14 +70,19 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
 
 
 def _touch_recorder(touched: set[int]) -> Step:
-    """A hook that adds the bodies of each substep's contacts to `touched`.
+    """A hook that adds the bodies of each substep's contacts to `touched`, but the first substep's.
 
-    Webots' TouchSensor reads the contacts of its one ODE step; a contact that bounces (wbtc.runtime.
-    bounce) may last less than a basic step here, so a bumper reads what touched in any substep.
+    Webots' bumper reads the contacts found at the end of its one ODE step (wbtc.runtime.bumpers); a
+    contact that bounces (wbtc.runtime.bounce) may last less than a basic step here, so a bumper reads
+    what touched in any substep too. The first substep starts at the pose the last step ended in,
+    which that step's end already counted.
     """
+    first = [True]
 
     def record(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-        if data.ncon:
+        if first[0]:
+            first[0] = False
+        elif data.ncon:
             bodies = model.geom_bodyid[data.contact.geom]
             touched.update(bodies[bodies[:, 0] != bodies[:, 1]].ravel().tolist())
 
