@@ -21,11 +21,11 @@ from wbtc.compile.result import CompileResult
 from wbtc.compile.table import DeviceEntry, RobotEntry
 from wbtc.runtime import conveyors, substeps, tone, tracks
 from wbtc.runtime.battery import Battery
-from wbtc.runtime.bumpers import Bumpers
 from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
 from wbtc.runtime.devices import Camera, Emitter, Led, Receiver, deliver
 from wbtc.runtime.display import Display
+from wbtc.runtime.end_contacts import Bumpers, EndContacts
 from wbtc.runtime.grippers import VacuumGripper
 from wbtc.runtime.joint_stops import StopGate
 from wbtc.runtime.kinematic_drive import DriveState
@@ -106,7 +106,9 @@ class Simulation:
         self._drags: tuple[Any, list[CentreDrag]] = (None, [])  # (MjModel, its trees' linear damping)
         self._still: StillJoints | None = None  # the joints of physics-free trees, per model
         self._stops: StopGate | None = None  # the joints with stops, per model (see joint_stops)
-        self._bumpers: Bumpers | None = None  # the bumper TouchSensors, per model (see bumpers)
+        self._bumpers: Bumpers | None = None  # the bumper TouchSensors, per model (see end_contacts)
+        self._end_contacts: EndContacts | None = None  # per model (see end_contacts)
+        self.steps = 0  # basic steps taken
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
@@ -303,6 +305,7 @@ class Simulation:
         mujoco.mj_comPos(model, data)
         mujoco.mj_camlight(model, data)
         mujoco.mj_comVel(model, data)
+        self.steps += 1
         if self._bumpers is None or self._bumpers.model is not model or self._bumpers.robots is not self.robots:
             self._bumpers = Bumpers(self)
         if self._bumpers.sensors:
@@ -333,6 +336,12 @@ class Simulation:
             robot.distance += math.dist(pos, robot.last_pos)
             robot.last_pos = pos
         self.keys_down = []
+
+    def end_contacts(self) -> EndContacts:
+        """The contacts at the pose the last step ended in, as Webots reports them (see end_contacts)."""
+        if self._end_contacts is None or self._end_contacts.model is not self.model:  # made once per model
+            self._end_contacts = EndContacts(self.model)
+        return self._end_contacts
 
     def _sample(self, robot: RobotState) -> None:
         """Sample a powered robot's sensors, motor feedback and keyboard that are due after this step."""

@@ -7,7 +7,7 @@
   relative to another node's pose;
 - `Node.getContactPoints(includeDescendants)`: each contact point of the Solid's body (and of its
   descendants' bodies when asked, for a top Solid only, as Webots), with the node id of the Solid
-  that owns the touching body;
+  that owns the touching body, at the pose the last step ended in (`wbtc.runtime.end_contacts`);
 - a field's value: a Solid's `translation` / `rotation` (or a PROTO parameter written `IS` into an
   inner Solid's) read where the body is now, every other field as the scene holds it.
 
@@ -65,8 +65,9 @@ def contact_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bo
     owners = {sim.model.body(name).id: n for n in tree.by_id.values()
               if (name := (sim.table.solids.get(id(n)) or ("",))[0])}
     points = []
-    for i in range(sim.data.ncon):
-        contact = sim.data.contact[i]
+    found = sim.end_contacts().collide(sim)  # Webots' contacts: those found where the step left the bodies
+    for i in range(found.ncon):
+        contact = found.contact[i]
         for geom in (contact.geom1, contact.geom2):
             b = int(sim.model.geom_bodyid[geom])
             if b == body or (descendants and descends(sim.model, b, body)):

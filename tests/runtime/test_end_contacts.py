@@ -1,8 +1,10 @@
-"""Bumper TouchSensors read the pose a step ended in, and hold a touch until read (wbtc.runtime.bumpers)."""
+"""Contacts at the pose a step ended in (wbtc.runtime.end_contacts): bumpers, which hold a touch until read,
+and a supervisor's getContactPoints."""
 
 from pathlib import Path
 
 import numpy as np
+import pytest
 
 from wbtc.runtime.launch import prepare
 from wbtc.runtime.sensors import TouchSensor
@@ -17,6 +19,7 @@ DEF BOX Solid {
   physics Physics { }
 }
 Robot {
+  supervisor TRUE
   children [
     TouchSensor {
       translation 0 0 0.05
@@ -29,10 +32,14 @@ Robot {
 """
 
 
-def _simulation(tmp_path: Path, physics_step: float):
+def _prepared(tmp_path: Path, physics_step: float):
     world = tmp_path / "bumper.wbt"
     world.write_text(_WORLD)
-    sim = prepare(world, physics_step=physics_step).sim
+    return prepare(world, physics_step=physics_step)
+
+
+def _simulation(tmp_path: Path, physics_step: float):
+    sim = _prepared(tmp_path, physics_step).sim
     plate = next(s for r in sim.robots for s in r.sensors.values() if isinstance(s, TouchSensor))
     return sim, plate
 
@@ -69,3 +76,22 @@ def test_a_touch_between_samples_is_held_until_the_bumper_is_read(tmp_path):
         plate.fresh = False
     assert readings == [(1, None), (2, None), (3, 0.0), (4, None), (5, None), (6, 1.0),
                         (7, None), (8, None), (9, 0.0)]
+
+
+def test_a_supervisor_gets_the_contact_points_of_the_end_pose(tmp_path):
+    # The same fall: after the fifth step the box is 0.0307 m into the plate. Its contact points are
+    # there (MuJoCo's: midway between the box's bottom and the plate's top face, z = 0.1), though the
+    # step itself started 0.0195 m above the plate.
+    prepared = _prepared(tmp_path, physics_step=1000.0)
+    sim, hub = prepared.sim, prepared.hub
+    robot = sim.robots[0]
+    box = hub.call(robot, "getFromDef", ("BOX", -1))["id"]
+    counts = []
+    for _ in range(5):
+        sim.step()
+        counts.append(len(hub.call(robot, "node.getContactPoints", (box, False))))
+    assert sim.data.ncon == 0  # the live data's contacts: the step's start pose
+    assert counts == [0, 0, 0, 0, 4]
+    points = hub.call(robot, "node.getContactPoints", (box, False))
+    bottom = 0.27 - 0.05 - 9.81 * 0.032**2 * 15
+    assert [p[2] for p, _ in points] == pytest.approx([(bottom + 0.1) / 2] * 4, abs=1e-9)
