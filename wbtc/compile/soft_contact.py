@@ -5,8 +5,9 @@ Opt-in (`CompileOptions.ode_contacts`, `wbtc run --ode-contacts`), with ODE's bo
 cylinders). It is Webots' contact, but not Webots' step: a Thymio II's 0.6 s spin in the shapes
 lesson then turns 86.2 to 86.5 degrees, near ODE's 85 at steps of 10 ms and below, where Webots'
 one 20 ms step turns 90.4 to 90.9 (wbtc's default contact: 88.9 to 90, a slip that makes up for it;
-with one 20 ms step here too, 76.6, cause not found: not the contact points, as a lying wheel
-touches at the lowest point of each rim in both MuJoCo's collider and Webots' dCollideCylinderPlane).
+with one 20 ms step here too, 76.6: not the contact points, as a lying wheel touches at the lowest
+point of each rim in both MuJoCo's collider and Webots' dCollideCylinderPlane; likely the noslip
+friction below, whose torque the normal forces found before it do not meet: README, Contacts).
 
 Webots solves each contact point as an ODE constraint row whose `softERP` and `softCFM` (0.2 and 0.001
 by default) make it, per point, a spring kp = ERP / (h·CFM) and a damper kd = (1 − ERP) / CFM in
