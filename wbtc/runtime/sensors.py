@@ -287,7 +287,7 @@ class TouchSensor(Sensor):
         node = entry.node
         self.has_physics = node is not None and isinstance(node.get("physics"), Node)
         self._force = np.zeros(6)
-        #: A bumper's flag: touching at the end of some step since it was last read (wbtc.runtime.bumpers).
+        #: A bumper's flag: touching at the end of some step since it was last read (wbtc.runtime.end_contacts).
         self.latched = False
 
     def sample(self, sim: Simulation) -> float | list[float]:
