@@ -72,7 +72,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
 def _touch_recorder(touched: set[int]) -> Step:
     """A hook that adds the bodies of each substep's contacts to `touched`, but the first substep's.
 
-    Webots' bumper reads the contacts found at the end of its one ODE step (wbtc.runtime.bumpers); a
+    Webots' bumper reads the contacts found at the end of its one ODE step (wbtc.runtime.end_contacts); a
     contact that bounces (wbtc.runtime.bounce) may last less than a basic step here, so a bumper reads
     what touched in any substep too. The first substep starts at the pose the last step ended in,
     which that step's end already counted.
