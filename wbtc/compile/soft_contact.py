@@ -1,13 +1,12 @@
 """ODE's soft contact (ContactProperties `softERP`, `softCFM`) as MuJoCo solver parameters; hard friction.
 
 Opt-in (`CompileOptions.ode_contacts`, `wbtc run --ode-contacts`), with ODE's bounce
-(wbtc.compile.bounce) and wheels that touch at both cylinder rims (wbtc.compile.joint keeps their
+(wbtc.compile.bounce), ODE's solve of each contact's normal and friction rows together
+(wbtc.runtime.ode_solve) and wheels that touch at both cylinder rims (wbtc.compile.joint keeps their
 cylinders). It is Webots' contact, but not Webots' step: a Thymio II's 0.6 s spin in the shapes
-lesson then turns 86.2 to 86.5 degrees, near ODE's 85 at steps of 10 ms and below, where Webots'
-one 20 ms step turns 90.4 to 90.9 (wbtc's default contact: 88.9 to 90, a slip that makes up for it;
-with one 20 ms step here too, 76.6: not the contact points, as a lying wheel touches at the lowest
-point of each rim in both MuJoCo's collider and Webots' dCollideCylinderPlane; likely the noslip
-friction below, whose torque the normal forces found before it do not meet: README, Contacts).
+lesson turns about 82 degrees at wbtc's 2 ms substeps, where Webots' one 20 ms step turns 90.4 to 90.9
+in an ODE model (85 at steps of 10 ms and below); with one 20 ms step here too, about 78 (README,
+Contacts: the cause is not found).
 
 Webots solves each contact point as an ODE constraint row whose `softERP` and `softCFM` (0.2 and 0.001
 by default) make it, per point, a spring kp = ERP / (h·CFM) and a damper kd = (1 − ERP) / CFM in
@@ -37,7 +36,9 @@ row's), which then only carries the normal forces, and MuJoCo's noslip pass (NOS
 solves the friction rows without regularisation within μ × those normal forces: Coulomb friction
 that stops a slip within a substep, without hops (measured: no hop for 100 kg, 2.8 mm for 0.1 kg
 at 3 m/s; slides of 1 and 3 m/s within 3 % of Coulomb's v² / 2μg; a 0.3 rad slope holds a 100 kg
-box to 3 µm/s).
+box to 3 µm/s). The noslip pass leaves the normal forces as the main solve found them, so nothing meets
+the friction forces' torque: wbtc.runtime.ode_solve then solves normal and friction rows together, from
+these forces, as ODE's one solve does.
 
 How the two geoms of a contact combine (MuJoCo's collision driver):
 

@@ -5,7 +5,8 @@ asymmetric friction (`contact_frames`), the surface velocity of Tracks' belts (`
 push-out speed of bodies placed inside each other (`recovery`, while they are) and restitution
 (`bounce`, with `--ode-contacts`). When a step has any, each substep runs `mj_step1`, then the rules
 on this substep's contacts (the friction directions first, as they rebuild the constraints, then the
-belts' velocities), then `mj_step2`; otherwise it is plain `mj_step`.
+belts' velocities), then `mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`,
+`mj_step2` is replaced by its stages with ODE's contact solve (`ode_solve`) before the integration.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import TYPE_CHECKING
 
 import mujoco
 
-from wbtc.runtime import tracks
+from wbtc.runtime import ode_solve, tracks
 from wbtc.runtime.bounce import bounce_hook
 from wbtc.runtime.contact_frames import ContactFrames
 from wbtc.runtime.recovery import recovery_for
@@ -51,7 +52,9 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     sim.moved = False
     if bounces is not None:
         hooks.append(bounces)  # last: the rows' references as the other rules leave them
-    if not hooks:
+    # Under ODE's contacts each substep's contact rows are solved again, ODE's way, before integrating.
+    finish = ode_solve.step2 if ode_solve.applies(model) else mujoco.mj_step2
+    if not hooks and finish is mujoco.mj_step2:
         sim.touched = None
         return mujoco.mj_step
     if touch:
@@ -64,7 +67,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
         mujoco.mj_step1(model, data)
         for hook in hooks:
             hook(model, data)
-        mujoco.mj_step2(model, data)
+        finish(model, data)
 
     return step
 
