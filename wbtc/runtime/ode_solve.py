@@ -70,32 +70,24 @@ def _rows_dense(model: mujoco.MjModel, data: mujoco.MjData, rows: np.ndarray) ->
 
 
 def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-    """Re-solve the contact rows of this substep as ODE does (after `mj_fwdConstraint`), island by island."""
+    """Re-solve the contact rows of this substep as ODE does (after `mj_fwdConstraint`)."""
     ncon = data.ncon
     if not ncon:
         return
     contacts = data.contact
     addresses = contacts.efc_address[:ncon]
     live = np.nonzero((addresses >= 0) & (contacts.dim[:ncon] >= 3))[0]
+    if not len(live) or not data.nisland:
+        return
+    # MuJoCo's islands (bodies that touch, directly or through others) are independent problems; those
+    # of more than MAX_ISLAND_CONTACTS contacts keep MuJoCo's forces. The others are solved as one
+    # (their rows do not act on each other, so the sweeps treat them apart all the same).
+    islands = data.efc_island[addresses[live]]
+    live = live[np.bincount(islands)[islands] <= MAX_ISLAND_CONTACTS]
     if not len(live):
         return
-    # MuJoCo's islands (bodies that touch, directly or through others) are independent problems.
-    islands = data.efc_island[addresses[live]] if data.nisland else np.zeros(len(live), int)
-    change = np.zeros(model.nv)
-    for island in np.unique(islands).tolist():
-        members = live[islands == island]
-        if len(members) <= MAX_ISLAND_CONTACTS:
-            change += _solve_island(model, data, addresses[members], contacts.friction[members])
-    if change.any():
-        data.qfrc_constraint[:] += change
-        extra = np.empty((1, model.nv))
-        mujoco.mj_solveM(model, data, extra, change.reshape(1, -1))
-        data.qacc[:] += extra[0]
-
-
-def _solve_island(model: mujoco.MjModel, data: mujoco.MjData, normal: np.ndarray,
-                  friction: np.ndarray) -> np.ndarray:
-    """Solve one island's contacts (rows at `normal`, μ in `friction`); its change of generalised force."""
+    normal = addresses[live]
+    friction = contacts.friction[live]
     # Rows: each contact's normal, then its two sliding friction rows (MuJoCo's elliptic layout).
     n = len(normal)
     rows = np.concatenate([normal, normal + 1, normal + 2])
@@ -103,47 +95,52 @@ def _solve_island(model: mujoco.MjModel, data: mujoco.MjData, normal: np.ndarray
     solved = np.empty_like(jac)
     mujoco.mj_solveM(model, data, solved, jac)  # rows of J M^-1
     a_mat = jac @ solved.T
-    forces = np.array(data.efc_force[rows])
+    forces = data.efc_force[rows]
     # The acceleration the rows see without their own forces: MuJoCo's, less what they contribute.
     accel = jac @ data.qacc - a_mat @ forces
     # The normal rows as MuJoCo made them (ODE's spring, damper and bounce); the friction rows' reference
     # is MuJoCo's too, the sliding velocity gone within the substep (or a Track belt's speed reached).
-    ref = data.efc_aref[rows]
     reg = np.concatenate([data.efc_R[normal], FRICTION_SOFTNESS * np.diag(a_mat)[n:]])
     mu = np.concatenate([friction[:, 0], friction[:, 1]])
-    new = _sweeps(a_mat, accel, ref, reg, mu, forces.copy(), n)
+    new = _sweeps(a_mat, accel, data.efc_aref[rows], reg, mu, forces, n)
+    delta = new - forces
     data.efc_force[rows] = new
-    return jac.T @ (new - forces)
+    data.qfrc_constraint[:] += jac.T @ delta
+    data.qacc[:] += solved.T @ delta  # M^-1 J^T delta
 
 
 def _sweeps(a_mat: np.ndarray, accel: np.ndarray, ref: np.ndarray, reg: np.ndarray, mu: np.ndarray,
-            f: np.ndarray, n: int) -> np.ndarray:
+            start: np.ndarray, n: int) -> np.ndarray:
     """ODE's projected Gauss-Seidel over n contacts' rows (normals, first frictions, second frictions).
 
     Row k's force makes its acceleration a_k = accel_k + (A f)_k reach ref_k − R_k f_k, a normal force
     kept at 0 or above, a friction force within ±μ × its contact's normal force as this sweep has it.
+    Starts from the forces `start`.
     """
-    acc = accel + a_mat @ f
+    acc = accel + a_mat @ start
+    total = np.diag(a_mat) + reg
     # A row the bodies' degrees of freedom cannot move (a friction direction along a hinge's axis) has
     # a zero diagonal: it gets no force.
-    total = np.diag(a_mat) + reg
     inverse = np.divide(1.0, total, out=np.zeros_like(total), where=total > 1e-12 * (1.0 + total.max()))
+    # Python floats: scalar arithmetic on NumPy's values costs several times more.
+    f, targets, soft, inv, mus = start.tolist(), ref.tolist(), reg.tolist(), inverse.tolist(), mu.tolist()
+    columns = list(a_mat)  # A is symmetric: row k is column k
     order = [k for i in range(n) for k in (i, i + n, i + 2 * n)]
     for _ in range(SWEEPS):
         largest = 0.0
         for k in order:
             old = f[k]
-            value = old - (acc[k] + reg[k] * old - ref[k]) * inverse[k]
+            value = old - (acc.item(k) + soft[k] * old - targets[k]) * inv[k]
             if k < n:
                 value = max(value, 0.0)
             else:
-                bound = mu[k - n] * f[k % n]
+                bound = mus[k - n] * f[k % n]
                 value = min(max(value, -bound), bound)
             change = value - old
             if change:
                 f[k] = value
-                acc += a_mat[k] * change  # A is symmetric: row k is column k
+                acc += columns[k] * change
                 largest = max(largest, abs(change))
-        if largest <= TOLERANCE * (1.0 + float(np.abs(f).max())):
+        if largest <= TOLERANCE * (1.0 + max(map(abs, f))):
             break
-    return f
+    return np.array(f)
