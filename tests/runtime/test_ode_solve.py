@@ -18,7 +18,7 @@ import mujoco
 import numpy as np
 import pytest
 
-from wbtc.runtime import ode_solve
+from wbtc.runtime import lcp, ode_solve
 from wbtc.runtime.launch import prepare
 
 _WORLD = """#VRML_SIM R2023b utf8
@@ -62,10 +62,27 @@ def test_a_pushed_box_tilts_as_in_ode(tmp_path, force, physics_step, ode_tilt, o
     assert x == pytest.approx(ode_x, rel=0.10)
 
 
-def test_sweeps_bound_friction_by_the_normal_force_of_the_sweep():
+def test_friction_is_bounded_by_the_normal_force_found():
     # One contact, one body of unit inverse mass: a 3 N pull along the first friction direction with
     # 1 N of normal force (μ 0.5) slides: the friction row stops at μ N = 0.5; the second stays at 0.
     a_mat = np.eye(3)
     accel = np.array([-1.0, 3.0, 0.0])  # gravity into the contact, a pull along t1
-    forces = ode_solve._sweeps(a_mat, accel, np.zeros(3), np.zeros(3), np.array([0.5, 0.5]), np.zeros(3), 1)
+    no_other_rows = (np.zeros(0), np.zeros(0))
+    forces = lcp.solve(a_mat, accel, np.zeros(3), np.zeros(3), np.array([0.5, 0.5]), no_other_rows, np.zeros(3), 1)
     assert forces.tolist() == pytest.approx([1.0, -0.5, 0.0])
+
+
+def test_pivoting_finishes_what_the_sweeps_leave():
+    # A contact whose normal and first friction row are almost the same direction for the bodies (a light
+    # wheel on a heavy robot couples its rows so): Gauss-Seidel crawls, 20 sweeps leave it far from the
+    # solution; pivoting then gives the exact one, here inside the friction box (μ 10).
+    a_mat = np.array([[1.0, 0.9999, 0.0], [0.9999, 1.0, 0.0], [0.0, 0.0, 1.0]])
+    accel = np.array([-2.0, -1.0, 0.5])
+    mu, no_other_rows = np.array([10.0, 10.0]), (np.zeros(0), np.zeros(0))
+    exact = np.linalg.solve(a_mat, -accel)
+    assert exact[0] > 0 and abs(exact[1]) < 10 * exact[0] and abs(exact[2]) < 10 * exact[0]
+    problem = lcp._Problem(mu, *no_other_rows, 1)
+    swept, settled = lcp.sweeps(a_mat, accel, np.zeros(3), np.zeros(3), problem, np.zeros(3), np.ones(3, bool))
+    assert not settled and np.abs(swept - exact).max() > 1.0
+    forces = lcp.solve(a_mat, accel, np.zeros(3), np.zeros(3), mu, no_other_rows, np.zeros(3), 1)
+    assert forces == pytest.approx(exact, abs=1e-6)

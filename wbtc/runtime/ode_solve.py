@@ -10,19 +10,22 @@ solves friction afterwards in MuJoCo's noslip pass, within the normal forces alr
 meets the friction's torque until the next step, and a body pushed or braked tilts and creeps (a
 1 kg box pushed by 2 N in one 32 ms step: 0.086 rad where the contacts' springs allow 0.0016).
 
-This module takes MuJoCo's solution (main solve and noslip) as the start of ODE's own iteration, a
-projected Gauss-Seidel over the contact rows of the substep, island by island (MuJoCo's islands:
-bodies touching each other): the normal row as MuJoCo made it (its regularisation R and reference
-acceleration are ODE's spring, damper and bounce), each friction row hard (reference: the sliding
-velocity gone within the substep, or a Track's belt speed reached) and boxed by its μ times the normal
-force of the sweep (ODE's `dContactApprox1`). The other rows (joint limits, equalities, friction
-loss) keep MuJoCo's forces. The constraint forces and accelerations MuJoCo integrates are then the
-ones found here. Measured against ODE 0.16 (tests/runtime/test_ode_solve.py): the pushed box tilts
-0.00126 rad where ODE's tilts 0.00134, at one 32 ms step and at 2 ms substeps alike.
+This module takes MuJoCo's solution (main solve and noslip) as the start of ODE's own LCP
+(wbtc.runtime.lcp: Gauss-Seidel sweeps, then exact pivoting where they have not settled), island by
+island (MuJoCo's islands: bodies touching each other, directly or through joints' rows): the normal
+row as MuJoCo made it (its regularisation R and reference acceleration are ODE's spring, damper and
+bounce), each friction row hard (WorldInfo's default `CFM`; reference: the sliding velocity gone
+within the substep, or a Track's belt speed reached) and boxed by its μ times the normal force found
+(ODE's `dContactApprox1`, along ODE's friction axes, dPlaneSpace of the normal), and the island's other
+rows (equalities, joint limits, friction losses) within their own bounds. The constraint forces and
+accelerations MuJoCo integrates are then the ones found here. Measured against ODE 0.16
+(tests/runtime/test_ode_solve.py): the pushed box tilts 0.00126 rad where ODE's tilts 0.00134, at one
+32 ms step and at 2 ms substeps alike.
 
-Not honoured: WorldInfo `CFM` on the friction rows (they are hard); MuJoCo's torsional and rolling
-rows (condim 4 and 6) keep their noslip forces; an island of more than MAX_ISLAND_CONTACTS contacts
-keeps MuJoCo's forces (the sweeps run in Python: 13 contacts cost about 2 ms a substep).
+Not honoured: WorldInfo `CFM` as written (the friction rows take its default); MuJoCo's torsional
+and rolling rows (condim 4 and 6) keep their noslip forces; an island of more than MAX_ISLAND_CONTACTS
+contacts keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity servos (MuJoCo
+actuators, outside the rows), where ODE's are rows of this LCP.
 """
 
 from __future__ import annotations
@@ -30,15 +33,13 @@ from __future__ import annotations
 import mujoco
 import numpy as np
 
-#: Gauss-Seidel sweeps over a substep's contact rows (ODE's quickstep default is 20).
-SWEEPS = 20
-#: Islands with more contacts keep MuJoCo's forces (noslip friction): the sweeps run in Python and cost
+from wbtc.runtime import lcp
+
+#: Islands with more contacts keep MuJoCo's forces (noslip friction): the solve runs in Python and costs
 #: the square of an island's rows (a pile of boxes on a fine elevation grid has a hundred contacts).
 MAX_ISLAND_CONTACTS = 8
-#: Sweeps end once no force changed by more than this share of the largest.
-TOLERANCE = 1e-10
-#: A friction row's regularisation relative to its diagonal: hard, as ODE's (CFM 1e-5).
-FRICTION_SOFTNESS = 1e-9
+#: ODE's constraint force mixing of a friction row (WorldInfo `CFM`'s default): R = CFM / h, hard.
+FRICTION_CFM = 1e-5
 
 
 def applies(model: mujoco.MjModel) -> bool:
@@ -90,57 +91,91 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     friction = contacts.friction[live]
     # Rows: each contact's normal, then its two sliding friction rows (MuJoCo's elliptic layout).
     n = len(normal)
-    rows = np.concatenate([normal, normal + 1, normal + 2])
+    others, bounds = _other_rows(data, np.unique(data.efc_island[normal]))
+    rows = np.concatenate([normal, normal + 1, normal + 2, others])
     jac = _rows_dense(model, data, rows)
+    # Friction along ODE's axes: a box is not round, so where its sides lie matters.
+    axes = _ode_axes(contacts.frame[live], friction)
+    jac[n:3 * n] = _turn(axes, jac[n:3 * n], n)
     solved = np.empty_like(jac)
     mujoco.mj_solveM(model, data, solved, jac)  # rows of J M^-1
     a_mat = jac @ solved.T
     forces = data.efc_force[rows]
+    forces[n:3 * n] = _turn(axes, forces[n:3 * n], n)
+    ref = data.efc_aref[rows]
+    ref[n:3 * n] = _turn(axes, ref[n:3 * n], n)
     # The acceleration the rows see without their own forces: MuJoCo's, less what they contribute.
     accel = jac @ data.qacc - a_mat @ forces
     # The normal rows as MuJoCo made them (ODE's spring, damper and bounce); the friction rows' reference
     # is MuJoCo's too, the sliding velocity gone within the substep (or a Track belt's speed reached).
-    reg = np.concatenate([data.efc_R[normal], FRICTION_SOFTNESS * np.diag(a_mat)[n:]])
+    # Friction rows are ODE's: hard, at WorldInfo's default CFM over the step.
+    friction_reg = np.full(2 * n, FRICTION_CFM / model.opt.timestep)
+    reg = np.concatenate([data.efc_R[normal], friction_reg, data.efc_R[others]])
     mu = np.concatenate([friction[:, 0], friction[:, 1]])
-    new = _sweeps(a_mat, accel, data.efc_aref[rows], reg, mu, forces, n)
+    new = lcp.solve(a_mat, accel, ref, reg, mu, bounds, forces, n)
     delta = new - forces
-    data.efc_force[rows] = new
+    back = new.copy()
+    back[n:3 * n] = _turn(np.transpose(axes, (0, 2, 1)), new[n:3 * n], n)  # MuJoCo's axes again
+    data.efc_force[rows] = back
     data.qfrc_constraint[:] += jac.T @ delta
     data.qacc[:] += solved.T @ delta  # M^-1 J^T delta
 
 
-def _sweeps(a_mat: np.ndarray, accel: np.ndarray, ref: np.ndarray, reg: np.ndarray, mu: np.ndarray,
-            start: np.ndarray, n: int) -> np.ndarray:
-    """ODE's projected Gauss-Seidel over n contacts' rows (normals, first frictions, second frictions).
+_EQUALITY = int(mujoco.mjtConstraint.mjCNSTR_EQUALITY)
+_BOXED = (int(mujoco.mjtConstraint.mjCNSTR_FRICTION_DOF), int(mujoco.mjtConstraint.mjCNSTR_FRICTION_TENDON))
+_ONE_SIDED = (int(mujoco.mjtConstraint.mjCNSTR_LIMIT_JOINT), int(mujoco.mjtConstraint.mjCNSTR_LIMIT_TENDON),
+              int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS))
 
-    Row k's force makes its acceleration a_k = accel_k + (A f)_k reach ref_k − R_k f_k, a normal force
-    kept at 0 or above, a friction force within ±μ × its contact's normal force as this sweep has it.
-    Starts from the forces `start`.
+
+def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+    """The islands' rows other than their contacts' sliding rows, and their (lower, upper) force bounds.
+
+    Equalities (a locked Connector's weld, a coupled joint) are unbounded; friction losses (ODE's motor
+    rows, wbtc.runtime.motor_rows; a joint's `staticFriction`) lie within ±their loss; joint limits and
+    frictionless contacts are one-sided. Torsional and rolling rows keep MuJoCo's forces.
     """
-    acc = accel + a_mat @ start
-    total = np.diag(a_mat) + reg
-    # A row the bodies' degrees of freedom cannot move (a friction direction along a hinge's axis) has
-    # a zero diagonal: it gets no force.
-    inverse = np.divide(1.0, total, out=np.zeros_like(total), where=total > 1e-12 * (1.0 + total.max()))
-    # Python floats: scalar arithmetic on NumPy's values costs several times more.
-    f, targets, soft, inv, mus = start.tolist(), ref.tolist(), reg.tolist(), inverse.tolist(), mu.tolist()
-    columns = list(a_mat)  # A is symmetric: row k is column k
-    order = [k for i in range(n) for k in (i, i + n, i + 2 * n)]
-    for _ in range(SWEEPS):
-        largest = 0.0
-        for k in order:
-            old = f[k]
-            value = old - (acc.item(k) + soft[k] * old - targets[k]) * inv[k]
-            if k < n:
-                value = max(value, 0.0)
-            else:
-                bound = mus[k - n] * f[k % n]
-                value = min(max(value, -bound), bound)
-            change = value - old
-            if change:
-                f[k] = value
-                acc += columns[k] * change
-                largest = max(largest, abs(change))
-        if largest <= TOLERANCE * (1.0 + max(map(abs, f))):
-            break
-    return np.array(f)
+    nefc = data.nefc
+    types = data.efc_type[:nefc]
+    equality, boxed, one_sided = types == _EQUALITY, np.isin(types, _BOXED), np.isin(types, _ONE_SIDED)
+    rows = np.nonzero((equality | boxed | one_sided) & np.isin(data.efc_island[:nefc], islands))[0]
+    loss = data.efc_frictionloss[rows]
+    lower = np.where(boxed[rows], -loss, np.where(one_sided[rows], 0.0, -np.inf))
+    upper = np.where(boxed[rows], loss, np.inf)
+    return rows, (lower, upper)
+
+
+def _ode_axes(frames: np.ndarray, friction: np.ndarray) -> np.ndarray:
+    """Per contact, the 2 x 2 turn from MuJoCo's friction axes (t1, t2) to ODE's (p, q).
+
+    ODE's contact joint takes its friction directions from the normal alone (dPlaneSpace): on a floor
+    facing +z, the world's y and x axes. Contacts whose two μ differ (asymmetric friction, oriented
+    by wbtc.runtime.contact_frames) keep their axes. The axes are the model's (ENU); in a NUE world
+    a floor's or a wall's are the same lines as Webots'.
+    """
+    frame = frames.reshape(-1, 3, 3)
+    normal, t1, t2 = frame[:, 0], frame[:, 1], frame[:, 2]
+    p = np.zeros_like(normal)
+    q = np.zeros_like(normal)
+    upright = np.abs(normal[:, 2]) > np.sqrt(0.5)
+    nx, ny, nz = normal[:, 0], normal[:, 1], normal[:, 2]
+    k = 1.0 / np.sqrt(np.where(upright, ny * ny + nz * nz, nx * nx + ny * ny))
+    p[:, 0] = np.where(upright, 0.0, -ny * k)
+    p[:, 1] = np.where(upright, -nz * k, nx * k)
+    p[:, 2] = np.where(upright, ny * k, 0.0)
+    q[:, 0] = np.where(upright, (ny * ny + nz * nz) * k, -nz * p[:, 1])
+    q[:, 1] = np.where(upright, -nx * p[:, 2], nz * p[:, 0])
+    q[:, 2] = np.where(upright, nx * p[:, 1], (nx * nx + ny * ny) * k)
+    axes = np.stack([np.stack([np.sum(p * t1, 1), np.sum(p * t2, 1)], 1),
+                     np.stack([np.sum(q * t1, 1), np.sum(q * t2, 1)], 1)], 1)
+    keep = friction[:, 0] != friction[:, 1]
+    axes[keep] = np.eye(2)
+    return axes
+
+
+def _turn(axes: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
+    """The first and second friction rows' `values` (rows, or one number each) turned by `axes`."""
+    first, second = values[:n], values[n:]
+    shape = (n,) + (1,) * (values.ndim - 1)
+    turned_first = axes[:, 0, 0].reshape(shape) * first + axes[:, 0, 1].reshape(shape) * second
+    turned_second = axes[:, 1, 0].reshape(shape) * first + axes[:, 1, 1].reshape(shape) * second
+    return np.concatenate([turned_first, turned_second])
