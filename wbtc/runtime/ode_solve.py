@@ -95,15 +95,17 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     rows = np.concatenate([normal, normal + 1, normal + 2, others])
     jac = _rows_dense(model, data, rows)
     # Friction along ODE's axes: a box is not round, so where its sides lie matters.
-    axes = _ode_axes(contacts.frame[live], friction)
-    jac[n:3 * n] = _turn(axes, jac[n:3 * n], n)
+    turn = _ode_turn(contacts.frame[live], friction)
+    if turn is not None:
+        jac[n:3 * n] = _turn(turn, jac[n:3 * n], n)
     solved = np.empty_like(jac)
     mujoco.mj_solveM(model, data, solved, jac)  # rows of J M^-1
     a_mat = jac @ solved.T
     forces = data.efc_force[rows]
-    forces[n:3 * n] = _turn(axes, forces[n:3 * n], n)
     ref = data.efc_aref[rows]
-    ref[n:3 * n] = _turn(axes, ref[n:3 * n], n)
+    if turn is not None:
+        forces[n:3 * n] = _turn(turn, forces[n:3 * n], n)
+        ref[n:3 * n] = _turn(turn, ref[n:3 * n], n)
     # The acceleration the rows see without their own forces: MuJoCo's, less what they contribute.
     accel = jac @ data.qacc - a_mat @ forces
     # The normal rows as MuJoCo made them (ODE's spring, damper and bounce); the friction rows' reference
@@ -115,16 +117,20 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     new = lcp.solve(a_mat, accel, ref, reg, mu, bounds, forces, n)
     delta = new - forces
     back = new.copy()
-    back[n:3 * n] = _turn(np.transpose(axes, (0, 2, 1)), new[n:3 * n], n)  # MuJoCo's axes again
+    if turn is not None:
+        back[n:3 * n] = _turn((turn[0], -turn[1]), new[n:3 * n], n)  # MuJoCo's axes again
     data.efc_force[rows] = back
     data.qfrc_constraint[:] += jac.T @ delta
     data.qacc[:] += solved.T @ delta  # M^-1 J^T delta
 
 
-_EQUALITY = int(mujoco.mjtConstraint.mjCNSTR_EQUALITY)
-_BOXED = (int(mujoco.mjtConstraint.mjCNSTR_FRICTION_DOF), int(mujoco.mjtConstraint.mjCNSTR_FRICTION_TENDON))
-_ONE_SIDED = (int(mujoco.mjtConstraint.mjCNSTR_LIMIT_JOINT), int(mujoco.mjtConstraint.mjCNSTR_LIMIT_TENDON),
-              int(mujoco.mjtConstraint.mjCNSTR_CONTACT_FRICTIONLESS))
+_C = mujoco.mjtConstraint
+#: The kind of each MuJoCo constraint type: 0 a contact's (or not solved here), 1 an equality, 2 a friction
+#: loss (boxed), 3 one-sided (a limit, a frictionless contact).
+_KIND = np.zeros(max(int(t) for t in _C.__members__.values()) + 1, int)
+_KIND[int(_C.mjCNSTR_EQUALITY)] = 1
+_KIND[[int(_C.mjCNSTR_FRICTION_DOF), int(_C.mjCNSTR_FRICTION_TENDON)]] = 2
+_KIND[[int(_C.mjCNSTR_LIMIT_JOINT), int(_C.mjCNSTR_LIMIT_TENDON), int(_C.mjCNSTR_CONTACT_FRICTIONLESS)]] = 3
 
 
 def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
@@ -135,47 +141,52 @@ def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, t
     frictionless contacts are one-sided. Torsional and rolling rows keep MuJoCo's forces.
     """
     nefc = data.nefc
-    types = data.efc_type[:nefc]
-    equality, boxed, one_sided = types == _EQUALITY, np.isin(types, _BOXED), np.isin(types, _ONE_SIDED)
-    rows = np.nonzero((equality | boxed | one_sided) & np.isin(data.efc_island[:nefc], islands))[0]
-    loss = data.efc_frictionloss[rows]
-    lower = np.where(boxed[rows], -loss, np.where(one_sided[rows], 0.0, -np.inf))
-    upper = np.where(boxed[rows], loss, np.inf)
+    kind = _KIND[data.efc_type[:nefc]]
+    if not kind.any():
+        return np.zeros(0, int), (np.zeros(0), np.zeros(0))
+    chosen = np.zeros(data.nisland, bool)
+    chosen[islands] = True
+    rows = np.nonzero((kind > 0) & chosen[data.efc_island[:nefc]])[0]
+    kind, loss = kind[rows], data.efc_frictionloss[rows]
+    lower = np.where(kind == 2, -loss, np.where(kind == 3, 0.0, -np.inf))
+    upper = np.where(kind == 2, loss, np.inf)
     return rows, (lower, upper)
 
 
-def _ode_axes(frames: np.ndarray, friction: np.ndarray) -> np.ndarray:
-    """Per contact, the 2 x 2 turn from MuJoCo's friction axes (t1, t2) to ODE's (p, q).
+def _ode_turn(frames: np.ndarray, friction: np.ndarray) -> tuple[np.ndarray, np.ndarray] | None:
+    """Per contact, the turn (cos, sin) from MuJoCo's friction axes to ODE's; None when no box turns.
 
-    ODE's contact joint takes its friction directions from the normal alone (dPlaneSpace): on a floor
-    facing +z, the world's y and x axes. Contacts whose two μ differ (asymmetric friction, oriented
-    by wbtc.runtime.contact_frames) keep their axes. The axes are the model's (ENU); in a NUE world
-    a floor's or a wall's are the same lines as Webots'.
+    ODE's contact joint takes its friction directions from the normal alone (dPlaneSpace: p in the y-z
+    plane for a normal near ±z, else in the x-y plane; q = n × p). MuJoCo's frame (n, t1, t2) is
+    right-handed too, so ODE's axes are MuJoCo's turned about n: p = cos·t1 + sin·t2. A box turned by
+    a multiple of 90 degrees is the same box (a floor's contacts, whose t1 and t2 MuJoCo aligns with
+    the world's axes): then nothing is turned. Contacts whose two μ differ (asymmetric friction,
+    oriented by wbtc.runtime.contact_frames) keep their axes. The axes are the model's (ENU); in a NUE
+    world a floor's or a wall's are the same lines as Webots'.
     """
-    frame = frames.reshape(-1, 3, 3)
-    normal, t1, t2 = frame[:, 0], frame[:, 1], frame[:, 2]
-    p = np.zeros_like(normal)
-    q = np.zeros_like(normal)
-    upright = np.abs(normal[:, 2]) > np.sqrt(0.5)
-    nx, ny, nz = normal[:, 0], normal[:, 1], normal[:, 2]
-    k = 1.0 / np.sqrt(np.where(upright, ny * ny + nz * nz, nx * nx + ny * ny))
-    p[:, 0] = np.where(upright, 0.0, -ny * k)
-    p[:, 1] = np.where(upright, -nz * k, nx * k)
-    p[:, 2] = np.where(upright, ny * k, 0.0)
-    q[:, 0] = np.where(upright, (ny * ny + nz * nz) * k, -nz * p[:, 1])
-    q[:, 1] = np.where(upright, -nx * p[:, 2], nz * p[:, 0])
-    q[:, 2] = np.where(upright, nx * p[:, 1], (nx * nx + ny * ny) * k)
-    axes = np.stack([np.stack([np.sum(p * t1, 1), np.sum(p * t2, 1)], 1),
-                     np.stack([np.sum(q * t1, 1), np.sum(q * t2, 1)], 1)], 1)
-    keep = friction[:, 0] != friction[:, 1]
-    axes[keep] = np.eye(2)
-    return axes
+    nx, ny, nz = frames[:, 0], frames[:, 1], frames[:, 2]
+    t1, t2 = frames[:, 3:6], frames[:, 6:9]
+    # p · t for p = (0, -nz, ny) / r (a normal near ±z) or (-ny, nx, 0) / r (any other).
+    upright = np.abs(nz) > np.sqrt(0.5)
+    if upright.all():  # floors, the usual case
+        r = np.sqrt(ny * ny + nz * nz)
+        cos = (ny * t1[:, 2] - nz * t1[:, 1]) / r
+        sin = (ny * t2[:, 2] - nz * t2[:, 1]) / r
+    else:
+        a, b, c = np.where(upright, 0.0, -ny), np.where(upright, -nz, nx), np.where(upright, ny, 0.0)
+        r = np.sqrt(a * a + b * b + c * c)
+        cos = (a * t1[:, 0] + b * t1[:, 1] + c * t1[:, 2]) / r
+        sin = (a * t2[:, 0] + b * t2[:, 1] + c * t2[:, 2]) / r
+    asymmetric = friction[:, 0] != friction[:, 1]
+    cos[asymmetric], sin[asymmetric] = 1.0, 0.0
+    if np.all(np.abs(cos * sin) < 1e-12):
+        return None
+    return cos, sin
 
 
-def _turn(axes: np.ndarray, values: np.ndarray, n: int) -> np.ndarray:
-    """The first and second friction rows' `values` (rows, or one number each) turned by `axes`."""
-    first, second = values[:n], values[n:]
+def _turn(turn: tuple[np.ndarray, np.ndarray], values: np.ndarray, n: int) -> np.ndarray:
+    """The first and second friction rows' `values` (rows, or one number each) turned by (cos, sin)."""
     shape = (n,) + (1,) * (values.ndim - 1)
-    turned_first = axes[:, 0, 0].reshape(shape) * first + axes[:, 0, 1].reshape(shape) * second
-    turned_second = axes[:, 1, 0].reshape(shape) * first + axes[:, 1, 1].reshape(shape) * second
-    return np.concatenate([turned_first, turned_second])
+    cos, sin = turn[0].reshape(shape), turn[1].reshape(shape)
+    first, second = values[:n], values[n:]
+    return np.concatenate([cos * first + sin * second, cos * second - sin * first])
