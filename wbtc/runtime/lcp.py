@@ -1,8 +1,8 @@
-"""The linear complementarity problem of ODE's contact and motor rows, solved for wbtc.runtime.ode_solve.
+"""The LCP of ODE's contact rows and their island's joint rows, solved for wbtc.runtime.ode_solve.
 
 Rows (in this order): n contacts' normal rows, their first friction rows, their second friction rows,
-then rows with fixed bounds (ODE's motor rows, wbtc.runtime.motor_rows, within ±the available torque;
-joint limits, 0 or more; equalities, unbounded). Row k's force f_k makes its acceleration
+then rows with fixed bounds (friction losses within ±their loss; joint limits, 0 or more; equalities,
+unbounded). Row k's force f_k makes its acceleration
 a_k = accel_k + (A f)_k reach ref_k − R_k f_k, unless a bound holds it:
 
 - a normal force is 0 or more (0 when the bodies would part faster than asked);
@@ -47,7 +47,7 @@ def solve(a_mat: np.ndarray, accel: np.ndarray, ref: np.ndarray, reg: np.ndarray
 
 
 class _Problem:
-    """The rows' bounds: normals at 0 or more, frictions within ±μ × their normal, the rest fixed."""
+    """The rows' bounds: normals at 0 or more, frictions within ±μ × their normal, the rest within fixed bounds."""
 
     def __init__(self, mu: np.ndarray, lower: np.ndarray, upper: np.ndarray, n: int) -> None:
         self.mu, self.lower, self.upper, self.n = mu, lower, upper, n

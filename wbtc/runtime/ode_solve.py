@@ -84,7 +84,8 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     # of more than MAX_ISLAND_CONTACTS contacts keep MuJoCo's forces. The others are solved as one
     # (their rows do not act on each other, so the sweeps treat them apart all the same).
     islands = data.efc_island[addresses[live]]
-    live = live[np.bincount(islands)[islands] <= MAX_ISLAND_CONTACTS]
+    live, islands = live[islands >= 0], islands[islands >= 0]  # (a row in no island: left as MuJoCo has it)
+    live = live[np.bincount(islands)[islands] <= MAX_ISLAND_CONTACTS] if len(live) else live
     if not len(live):
         return
     normal = addresses[live]
@@ -136,8 +137,8 @@ _KIND[[int(_C.mjCNSTR_LIMIT_JOINT), int(_C.mjCNSTR_LIMIT_TENDON), int(_C.mjCNSTR
 def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
     """The islands' rows other than their contacts' sliding rows, and their (lower, upper) force bounds.
 
-    Equalities (a locked Connector's weld, a coupled joint) are unbounded; friction losses (ODE's motor
-    rows, wbtc.runtime.motor_rows; a joint's `staticFriction`) lie within ±their loss; joint limits and
+    Equalities (a locked Connector's weld, a coupled joint) are unbounded; friction losses (a joint's
+    `staticFriction`) lie within ±their loss; joint limits and
     frictionless contacts are one-sided. Torsional and rolling rows keep MuJoCo's forces.
     """
     nefc = data.nefc
@@ -146,7 +147,8 @@ def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, t
         return np.zeros(0, int), (np.zeros(0), np.zeros(0))
     chosen = np.zeros(data.nisland, bool)
     chosen[islands] = True
-    rows = np.nonzero((kind > 0) & chosen[data.efc_island[:nefc]])[0]
+    island = data.efc_island[:nefc]
+    rows = np.nonzero((kind > 0) & (island >= 0) & chosen[island])[0]
     kind, loss = kind[rows], data.efc_frictionloss[rows]
     lower = np.where(kind == 2, -loss, np.where(kind == 3, 0.0, -np.inf))
     upper = np.where(kind == 2, loss, np.inf)
