@@ -48,6 +48,10 @@ def _material(tmp_path: Path, appearance: str) -> tuple[float, float, object]:
     ("PBRAppearance { baseColor 0 0 0 roughness 0 metalness 1 }", 0.0, 1.0),
     ("PBRAppearance { baseColor 0.5 0.5 0.5 roughness 0.2 metalness 0 }", 0.4, 0.8),
     ("PBRAppearance { baseColor 0.5 0.5 0.5 roughness 0.2 metalness 1 }", 0.2, 0.8),
+    # A blue metal reflects no red: MuJoCo's white highlight takes the weakest channel (none here).
+    ("PBRAppearance { baseColor 0 0 1 roughness 0 metalness 1 }", 0.0, 1.0),
+    # Half metal: half a dielectric's white highlight, half the weakest channel's.
+    ("PBRAppearance { baseColor 1 0.8 0.2 roughness 0 metalness 0.5 }", 0.5 * (0.5 + 0.5 * 0.2), 1.0),
 ])
 def test_material_specular_and_shininess(tmp_path: Path, appearance: str, specular: float, shininess: float):
     got_specular, got_shininess, _ = _material(tmp_path, appearance)

@@ -125,11 +125,14 @@ def _pbr_specular(appearance: Node) -> tuple[float, float]:
 
     A dielectric reflects white highlights, stronger the smoother it is: 0.5 · (1 − roughness). A metal
     reflects in its base colour (physically based shading's F0 blends from white to baseColor with
-    metalness), so a black metal shows no highlight; MuJoCo's level takes the colour's mean.
+    metalness), so a black metal shows no highlight. MuJoCo's highlight is white (its level scales the
+    light's specular colour), so a metal's level is its base colour's weakest channel: a white
+    highlight at the mean would add red and green to a blue metal, which reflects none (Webots' blue
+    metal background reads red 0 in `camera_color_motion_blur`); a grey metal keeps its level.
     """
     roughness = float(np.clip(float(appearance.get("roughness")), 0.0, 1.0))
     metalness = float(np.clip(float(appearance.get("metalness")), 0.0, 1.0))
-    tint = (1 - metalness) + metalness * float(np.mean(np.asarray(appearance.get("baseColor"), dtype=float)))
+    tint = (1 - metalness) + metalness * float(np.min(np.asarray(appearance.get("baseColor"), dtype=float)))
     return 0.5 * (1 - roughness) * tint, 1 - roughness
 
 
