@@ -14,7 +14,8 @@ Webots reads its contact joints' feedback).
   less than a basic step) and cleared when the sensor is read (`WbTouchSensor::computeValue`), so a
   bumper sampled every few steps reads 1 when any of those steps touched. As in Webots the flag is
   raised whether the sensor is enabled or not.
-- `Node.getContactPoints` (`wbtc.runtime.supervisor_queries`) lists the end pose's contacts.
+- `Node.getContactPoints` (`wbtc.runtime.supervisor_queries`) lists the end pose's contacts (with
+  `--ode-contacts`, a cylinder on a plane at Webots' points: `wbtc.runtime.ode_cylinders`).
 
 Not honoured: a GUI touch (a user's click on a bumper); contacts asked for after a supervisor moved a
 body in the same step are those of the moved pose (Webots keeps the step's until the next step).
@@ -27,6 +28,7 @@ from typing import TYPE_CHECKING
 import mujoco
 import numpy as np
 
+from wbtc.runtime import ode_cylinders, ode_solve
 from wbtc.runtime.sensors import TouchSensor
 
 if TYPE_CHECKING:
@@ -39,6 +41,7 @@ class EndContacts:
     def __init__(self, model: mujoco.MjModel) -> None:
         self.model = model
         self.data = mujoco.MjData(model)
+        self.cylinders = ode_solve.applies(model) and ode_cylinders.hook_for(model) is not None
         self._pose: tuple[int, np.ndarray] | None = None  # (step count, qpos) the scratch data last collided
 
     def collide(self, sim: Simulation) -> mujoco.MjData:
@@ -49,6 +52,8 @@ class EndContacts:
             scratch.qpos[:] = qpos
             mujoco.mj_kinematics(self.model, scratch)
             mujoco.mj_collision(self.model, scratch)
+            if self.cylinders and not ode_cylinders.all_lying(self.model, scratch):
+                ode_cylinders.rewrite(self.model, scratch)  # Webots' cylinder-plane points, as the substeps
             self._pose = (sim.steps, qpos.copy())
         return self.data
 

@@ -113,7 +113,7 @@ class Simulation:
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
         # (MjModel, its bounce hook, whether a robot has a TouchSensor, its Recovery): see substeps.
-        self.per_model: tuple[Any, Any, bool, Any] = (None, None, False, None)
+        self.per_model: tuple[Any, Any, bool, Any, Any] = (None, None, False, None, None)
         self.moved = True  # bodies were placed since the last step: the start, a supervisor (see substeps)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run

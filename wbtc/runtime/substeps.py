@@ -1,12 +1,13 @@
 """The function that takes one MuJoCo substep: `mj_step`, or a split step where Webots' contact rules act.
 
-Webots decides some things per contact that MuJoCo's model cannot say: the directions of
-asymmetric friction (`contact_frames`), the surface velocity of Tracks' belts (`tracks`), ODE's
-push-out speed of bodies placed inside each other (`recovery`, while they are) and restitution
-(`bounce`, with `--ode-contacts`). When a step has any, each substep runs `mj_step1`, then the rules
-on this substep's contacts (the friction directions first, as they rebuild the constraints, then the
-belts' velocities), then `mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`,
-`mj_step2` is replaced by its stages with ODE's contact solve (`ode_solve`) before the integration.
+Webots decides some things per contact that MuJoCo's model cannot say: the directions of asymmetric
+friction (`contact_frames`), the surface velocity of Tracks' belts (`tracks`), ODE's push-out speed
+of bodies placed inside each other (`recovery`, while they are), and with `--ode-contacts` Webots'
+cylinder-on-plane points (`ode_cylinders`) and restitution (`bounce`). When a step has any, each
+substep runs `mj_step1`, then the rules on this substep's contacts (the cylinder points and then the
+friction directions first, as they rebuild the constraints, then the belts' velocities), then
+`mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`, `mj_step2` is replaced by its
+stages with ODE's contact solve (`ode_solve`) before the integration.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import mujoco
 
-from wbtc.runtime import ode_solve, tracks
+from wbtc.runtime import ode_cylinders, ode_solve, tracks
 from wbtc.runtime.bounce import bounce_hook
 from wbtc.runtime.contact_frames import ContactFrames
 from wbtc.runtime.recovery import recovery_for
@@ -31,6 +32,15 @@ Step = Callable[[mujoco.MjModel, mujoco.MjData], None]
 def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     """`mj_step`, or the split step running this world's contact rules between MuJoCo's halves."""
     hooks: list[Step] = []
+    if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
+        touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
+        cylinders = ode_cylinders.hook_for(model) if ode_solve.applies(model) else None
+        sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch,
+                         recovery_for(sim.table.recovery, model), cylinders)
+        sim.moved = True  # a new model: look for placed overlaps
+    _, bounces, touch, recover, cylinders = sim.per_model
+    if cylinders is not None:
+        hooks.append(cylinders)  # first: the other rules read the contacts it writes
     if sim.table.asymmetric_friction is not None:
         if sim.frames is None or sim.frames.model is not model:  # made once per model
             sim.frames = ContactFrames(model, sim.table.asymmetric_friction)
@@ -38,12 +48,6 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
-    if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
-        touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
-        sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch,
-                         recovery_for(sim.table.recovery, model))
-        sim.moved = True  # a new model: look for placed overlaps
-    _, bounces, touch, recover = sim.per_model
     if recover is not None:
         if sim.moved:
             recover.find(model, sim.data)
