@@ -57,10 +57,7 @@ class ContactFrames:
     def orient(self, model: mujoco.MjModel, data: mujoco.MjData) -> None:
         """Between `mj_step1` and `mj_step2`: turn the asymmetric contacts and rebuild the constraints."""
         if self._orient(data):
-            mujoco.mj_makeConstraint(model, data)
-            mujoco.mj_island(model, data)
-            mujoco.mj_projectConstraint(model, data)
-            mujoco.mj_referenceConstraint(model, data)
+            rebuild_constraints(model, data)
 
     def _orient(self, data: mujoco.MjData) -> bool:
         """Set the frames and sliding coefficients of this step's asymmetric contacts; whether any were."""
@@ -119,6 +116,19 @@ class ContactFrames:
             local = np.abs(axes.T @ normal)
             return axes[:, 0].copy() if local[2] > local[0] and local[2] > local[1] else axes[:, 2].copy()
         return None
+
+
+def rebuild_constraints(model: mujoco.MjModel, data: mujoco.MjData) -> None:
+    """Make the constraints of `data`'s contacts again, after `mj_step1`, as it makes them.
+
+    mj_fwdPosition's constraint stages, then mj_fwdVelocity's row velocities and references: for
+    contacts whose frames, coefficients or number a rule changed between `mj_step1` and `mj_step2`.
+    """
+    mujoco.mj_makeConstraint(model, data)
+    mujoco.mj_island(model, data)
+    mujoco.mj_projectConstraint(model, data)
+    mujoco.mj_mulJacVec(model, data, data.efc_vel, data.qvel)
+    mujoco.mj_referenceConstraint(model, data)
 
 
 def _turn(vector: np.ndarray, axis: np.ndarray, angle: float) -> np.ndarray:

@@ -41,7 +41,7 @@ class EndContacts:
     def __init__(self, model: mujoco.MjModel) -> None:
         self.model = model
         self.data = mujoco.MjData(model)
-        self.cylinders = ode_solve.applies(model) and ode_cylinders.hook_for(model) is not None
+        self.cylinders = ode_solve.applies(model) and ode_cylinders.applies(model)
         self._pose: tuple[int, np.ndarray] | None = None  # (step count, qpos) the scratch data last collided
 
     def collide(self, sim: Simulation) -> mujoco.MjData:
@@ -52,7 +52,7 @@ class EndContacts:
             scratch.qpos[:] = qpos
             mujoco.mj_kinematics(self.model, scratch)
             mujoco.mj_collision(self.model, scratch)
-            if self.cylinders and not ode_cylinders.all_lying(self.model, scratch):
+            if self.cylinders:
                 ode_cylinders.rewrite(self.model, scratch)  # Webots' cylinder-plane points, as the substeps
             self._pose = (sim.steps, qpos.copy())
         return self.data

@@ -38,6 +38,8 @@ from collections.abc import Callable
 import mujoco
 import numpy as np
 
+from wbtc.runtime.contact_frames import rebuild_constraints
+
 Hook = Callable[[mujoco.MjModel, mujoco.MjData], None]
 
 #: Webots' collider: axis and normal "parallel" below this sin², "slightly inclined" below INCLINED_SINE2.
@@ -52,21 +54,20 @@ _FIELDS = ("pos", "frame", "dist", "geom", "geom1", "geom2", "friction", "solref
 _PLANE, _CYLINDER = int(mujoco.mjtGeom.mjGEOM_PLANE), int(mujoco.mjtGeom.mjGEOM_CYLINDER)
 
 
+def applies(model: mujoco.MjModel) -> bool:
+    """Whether `model` has a cylinder and a plane (which may touch)."""
+    types = model.geom_type
+    return bool((types == _PLANE).any() and (types == _CYLINDER).any())
+
+
 def hook_for(model: mujoco.MjModel) -> Hook | None:
     """The substep hook giving cylinder-plane pairs Webots' points, or None when `model` has no such pair."""
-    types = model.geom_type
-    if not ((types == _PLANE).any() and (types == _CYLINDER).any()):
+    if not applies(model):
         return None
 
     def hook(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-        if data.ncon and not all_lying(model, data) and rewrite(model, data):
-            # The constraints of the new contacts, as mj_step1 makes them (mj_fwdPosition, then
-            # mj_fwdVelocity's row velocities and references).
-            mujoco.mj_makeConstraint(model, data)
-            mujoco.mj_island(model, data)
-            mujoco.mj_projectConstraint(model, data)
-            mujoco.mj_mulJacVec(model, data, data.efc_vel, data.qvel)
-            mujoco.mj_referenceConstraint(model, data)
+        if data.ncon and rewrite(model, data):
+            rebuild_constraints(model, data)
 
     return hook
 
@@ -103,21 +104,6 @@ def ode_points(plane_pos: np.ndarray, normal: np.ndarray, centre: np.ndarray, fr
     return points
 
 
-def all_lying(model: mujoco.MjModel, data: mujoco.MjData) -> bool:
-    """Whether every cylinder touching a plane lies on its side (wheels): MuJoCo's points are then Webots'.
-
-    Checked before anything else, as it is cheap and the usual case (the e-puck's and the Thymio's wheels).
-    """
-    geoms = data.contact.geom
-    types = model.geom_type[geoms]
-    pairs = (types[:, 0] == _PLANE) & (types[:, 1] == _CYLINDER)
-    if not pairs.any():
-        return True
-    xmat = data.geom_xmat
-    cosines = np.einsum("ij,ij->i", xmat[geoms[pairs, 0]][:, 2::3], xmat[geoms[pairs, 1]][:, 2::3])
-    return bool((np.abs(cosines) <= _LYING_COSINE).all())
-
-
 def rewrite(model: mujoco.MjModel, data: mujoco.MjData) -> bool:
     """Replace each cylinder-plane pair's contacts by Webots' points (after `mj_collision`); whether any changed.
 
@@ -128,6 +114,12 @@ def rewrite(model: mujoco.MjModel, data: mujoco.MjData) -> bool:
     types = model.geom_type[geoms]
     pairs = (types[:, 0] == _PLANE) & (types[:, 1] == _CYLINDER)
     if not pairs.any():
+        return False
+    # The usual case, checked first as it is cheap: every touching cylinder lies on its side (the e-puck's
+    # and the Thymio's wheels), where MuJoCo's points are Webots'.
+    xmat = data.geom_xmat
+    cosines = np.einsum("ij,ij->i", xmat[geoms[pairs, 0]][:, 2::3], xmat[geoms[pairs, 1]][:, 2::3])
+    if (np.abs(cosines) <= _LYING_COSINE).all():
         return False
     entries: list[tuple[int, np.ndarray | None, float]] = []  # (source contact, new position, new dist)
     done: set[tuple[int, int]] = set()
