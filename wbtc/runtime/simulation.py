@@ -112,8 +112,9 @@ class Simulation:
         self.frames: Any = None  # asymmetric-friction contacts of the current model (see substeps)
         # Bodies in contact during some substep of the last basic step, when substeps are split (see substeps).
         self.touched: set[int] | None = None
-        # (MjModel, its bounce hook, whether a robot has a TouchSensor, its Recovery, its cylinder hook): see substeps.
-        self.per_model: tuple[Any, Any, bool, Any, Any] = (None, None, False, None, None)
+        # (MjModel, its bounce hook, whether a robot has a TouchSensor, its Recovery, its cylinder hook, its
+        # centre-of-mass integration): see substeps.
+        self.per_model: tuple[Any, Any, bool, Any, Any, Any] = (None, None, False, None, None, None)
         self.moved = True  # bodies were placed since the last step: the start, a supervisor (see substeps)
         self.tree: Any = None  # the world's SceneTree (Webots node ids), set by whoever holds the scene
         self.substitutions: Any = None  # controllers.Substitutions of a `wbtc.run` or a batch run

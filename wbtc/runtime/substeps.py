@@ -7,7 +7,8 @@ cylinder-on-plane points (`ode_cylinders`) and restitution (`bounce`). When a st
 substep runs `mj_step1`, then the rules on this substep's contacts (the cylinder points and then the
 friction directions first, as they rebuild the constraints, then the belts' velocities), then
 `mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`, `mj_step2` is replaced by its
-stages with ODE's contact solve (`ode_solve`) before the integration.
+stages with ODE's contact solve (`ode_solve`) before the integration, and free bodies are integrated
+at their centre of mass, as ODE's (`com_integration`).
 """
 
 from __future__ import annotations
@@ -19,6 +20,7 @@ import mujoco
 
 from wbtc.runtime import ode_cylinders, ode_solve, tracks
 from wbtc.runtime.bounce import bounce_hook
+from wbtc.runtime.com_integration import ComIntegration
 from wbtc.runtime.contact_frames import ContactFrames
 from wbtc.runtime.recovery import recovery_for
 from wbtc.runtime.sensors import TouchSensor
@@ -34,11 +36,13 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     hooks: list[Step] = []
     if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
         touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
-        cylinders = ode_cylinders.hook_for(model) if ode_solve.applies(model) else None
+        ode = ode_solve.applies(model)
+        cylinders = ode_cylinders.hook_for(model) if ode else None
+        com = ComIntegration(model) if ode else None
         sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch,
-                         recovery_for(sim.table.recovery, model), cylinders)
+                         recovery_for(sim.table.recovery, model), cylinders, com if com else None)
         sim.moved = True  # a new model: look for placed overlaps
-    _, bounces, touch, recover, cylinders = sim.per_model
+    _, bounces, touch, recover, cylinders, com = sim.per_model
     if cylinders is not None:
         hooks.append(cylinders)  # first: the other rules read the contacts it writes
     if sim.table.asymmetric_friction is not None:
@@ -55,7 +59,9 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
             hooks.append(recover.hook)
     sim.moved = False
     if bounces is not None:
-        hooks.append(bounces)  # last: the rows' references as the other rules leave them
+        hooks.append(bounces)  # the rows' references as the other rules leave them
+    if com is not None:
+        hooks.append(com.hook)  # last: it shifts the references every rule above has set
     # Under ODE's contacts each substep's contact rows are solved again, ODE's way, before integrating.
     finish = ode_solve.step2 if ode_solve.applies(model) else mujoco.mj_step2
     if not hooks and finish is mujoco.mj_step2:
@@ -73,7 +79,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
             hook(model, data)
         finish(model, data)
 
-    return step
+    return com.wrap(step) if com is not None else step
 
 
 def _touch_recorder(touched: set[int]) -> Step:
