@@ -11,8 +11,9 @@ import pytest
 
 from wbtc.compile.compiler import compile_scene
 from wbtc.pipeline import load_world
+from wbtc.runtime import supervisor_queries
 from wbtc.runtime.simulation import Simulation
-from wbtc.runtime.supervisor import SupervisorHub
+from wbtc.runtime.supervisor import SupervisorError, SupervisorHub
 
 WORLD = Path(__file__).parents[1] / "conformance" / "api" / "worlds" / "center_of_mass_and_contact_points.wbt"
 
@@ -56,6 +57,8 @@ def test_contact_points_belong_to_the_solid_or_its_descendants(hub):
     assert len(own) == 16 and len(with_descendants) == 19
     assert {node for _, node in own} == {robot}
     assert [node for _, node in with_descendants].count(secondary) == 3
+    # Solid by Solid, the node's own first (Webots: the last point is the descendant's).
+    assert [node for _, node in with_descendants] == [robot] * 16 + [secondary] * 3
     # The legs' points lie on the floor, half their 0.112 mm depth (ODE's rest depth, as the world saved it).
     on_floor = [point for point, _ in with_descendants if abs(point[1]) < 1e-3]
     assert len(on_floor) == 15 and all(abs(point[1] + 0.000056) < 1e-6 for point in on_floor)
@@ -71,3 +74,31 @@ def test_a_solid_inside_another_lists_its_own_points_but_no_descendants(hub):
     box = hub.call(supervisor, "getFromDef", ("SLOT_SOLID", -1))["id"]  # in the e-puck's turret slot
     assert len(hub.call(supervisor, "node.getContactPoints", (box, False))) == 4
     assert hub.call(supervisor, "node.getContactPoints", (box, True)) == []
+
+
+def test_robot_1_is_statically_balanced_on_its_legs(hub):
+    # Webots' check: the centre of mass projects, along gravity, inside the hull of the contact points.
+    hub, supervisor, _ = hub
+    robot, _ = _robot_1(hub, supervisor)
+    assert hub.call(supervisor, "node.getStaticBalance", (robot,)) is True
+
+
+def test_static_balance_wants_a_top_solid(hub):
+    hub, supervisor, _ = hub
+    _, secondary = _robot_1(hub, supervisor)
+    with pytest.raises(SupervisorError) as error:
+        hub.call(supervisor, "node.getStaticBalance", (secondary,))
+    assert str(error.value) == ("Warning: wb_supervisor_node_get_static_balance() can exclusively be used with a "
+                                "top Solid")
+
+
+def test_the_support_polygon_is_the_hull_of_the_points():
+    # Four legs' crosses (the inner points fall inside), and a point past an edge.
+    points = [(x + dx, y + dy) for x in (-1.0, 1.0) for y in (-1.0, 1.0)
+              for dx, dy in ((0.2, 0.0), (-0.2, 0.0), (0.0, 0.2), (0.0, -0.2))]
+    hull = supervisor_queries._convex_hull(points)
+    assert len(hull) == 8 and set(hull) <= set(points)
+    assert supervisor_queries._inside((0.0, 0.0), hull)
+    assert supervisor_queries._inside((1.2, 0.0), hull)  # on an edge
+    assert not supervisor_queries._inside((1.21, 0.0), hull)
+    assert supervisor_queries._convex_hull([(0.0, 0.0), (1.0, 1.0), (2.0, 2.0)]) == [(0.0, 0.0), (2.0, 2.0)]

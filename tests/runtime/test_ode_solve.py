@@ -86,3 +86,8 @@ def test_pivoting_finishes_what_the_sweeps_leave():
     assert not settled and np.abs(swept - exact).max() > 1.0
     forces = lcp.solve(a_mat, accel, np.zeros(3), np.zeros(3), mu, no_other_rows, np.zeros(3), 1)
     assert forces == pytest.approx(exact, abs=1e-6)
+
+
+def test_longer_substeps_solve_larger_islands():
+    # The Python solve's cost goes with the contacts solved per simulated second.
+    assert [ode_solve.island_limit(h) for h in (0.001, 0.002, 0.016, 0.032)] == [8, 8, 64, 128]

@@ -14,11 +14,12 @@ thrown 7 mm up by its contacts in the next step.
 
 Under `--ode-contacts` (wbtc.runtime.substeps) each substep's rows get references for velocities of
 centres of mass (`hook`, after `mj_step1`), and after the substep every free joint is moved so that
-its body's centre of mass is where ODE's step puts it (`wrap`), and turned as ODE turns it: ODE turns a body by q + h/2 (0, w) q, normalised, that is by
-2 atan(|w| h / 2) per step where MuJoCo turns it by |w| h (0.516 rad against 0.528 for 16.5 rad/s at
-32 ms). By default (MuJoCo's contact) nothing changes: at 2 ms substeps the differences are small
-and the correction would cost more than the contact itself. Not honoured: the same rotation for the
-bodies a joint moves (MuJoCo integrates joint angles; in ODE every body is free and turned so).
+its body's centre of mass is where ODE's step puts it (`wrap`), and turned as ODE turns it: by
+q + h/2 (0, w) q, normalised, that is by 2 atan(|w| h / 2) per step where MuJoCo turns it by |w| h
+(0.516 rad against 0.528 for 16.5 rad/s at 32 ms). By default (MuJoCo's contact) nothing changes:
+at 2 ms substeps the differences are small and the correction would cost more than the contact.
+Not honoured: the same rotation for the bodies a joint moves (MuJoCo integrates joint angles; in ODE
+every body is free and turned so).
 """
 
 from __future__ import annotations

@@ -23,8 +23,8 @@ accelerations MuJoCo integrates are then the ones found here. Measured against O
 32 ms step and at 2 ms substeps alike.
 
 Not honoured: WorldInfo `CFM` as written (the friction rows take its default); MuJoCo's torsional
-and rolling rows (condim 4 and 6) keep their noslip forces; an island of more than MAX_ISLAND_CONTACTS
-contacts keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity servos (MuJoCo
+and rolling rows (condim 4 and 6) keep their noslip forces; an island of more contacts than
+`island_limit` allows keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity servos (MuJoCo
 actuators, outside the rows), where ODE's are rows of this LCP.
 """
 
@@ -37,7 +37,12 @@ from wbtc.runtime import lcp
 
 #: Islands with more contacts keep MuJoCo's forces (noslip friction): the solve runs in Python and costs
 #: the square of an island's rows (a pile of boxes on a fine elevation grid has a hundred contacts).
+#: At wbtc's 2 ms substeps: 8; longer substeps allow more (`island_limit`).
 MAX_ISLAND_CONTACTS = 8
+#: The contacts an island may have per second of simulated time at one solve per substep: the Python
+#: solve's cost goes with the contacts solved per simulated second, so a substep 16 times longer
+#: (Webots' one step per 32 ms, `--physics-step 1000`) may solve islands 16 times larger (128).
+CONTACTS_PER_SECOND = 4000.0
 #: ODE's constraint force mixing of a friction row (WorldInfo `CFM`'s default): R = CFM / h, hard.
 FRICTION_CFM = 1e-5
 
@@ -45,6 +50,15 @@ FRICTION_CFM = 1e-5
 def applies(model: mujoco.MjModel) -> bool:
     """Whether `model` has ODE's contacts (wbtc.compile.soft_contact turns MuJoCo's noslip pass on)."""
     return model.opt.noslip_iterations > 0
+
+
+def island_limit(substep: float) -> int:
+    """The most contacts an island solved here may have at substeps of `substep` seconds.
+
+    8 at 2 ms, 128 at Webots' 32 ms step: a robot on four cylinder legs touching at Webots' 20 points,
+    with an e-puck against it, is one island of 26 contacts.
+    """
+    return max(MAX_ISLAND_CONTACTS, int(CONTACTS_PER_SECOND * substep + 1e-9))
 
 
 def step2(model: mujoco.MjModel, data: mujoco.MjData) -> None:
@@ -81,11 +95,12 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     if not len(live) or not data.nisland:
         return
     # MuJoCo's islands (bodies that touch, directly or through others) are independent problems; those
-    # of more than MAX_ISLAND_CONTACTS contacts keep MuJoCo's forces. The others are solved as one
+    # of more contacts than `island_limit` allows keep MuJoCo's forces. The others are solved as one
     # (their rows do not act on each other, so the sweeps treat them apart all the same).
     islands = data.efc_island[addresses[live]]
     live, islands = live[islands >= 0], islands[islands >= 0]  # (a row in no island: left as MuJoCo has it)
-    live = live[np.bincount(islands)[islands] <= MAX_ISLAND_CONTACTS] if len(live) else live
+    limit = island_limit(model.opt.timestep)
+    live = live[np.bincount(islands)[islands] <= limit] if len(live) else live
     if not len(live):
         return
     normal = addresses[live]

@@ -8,11 +8,14 @@
 - `Node.getContactPoints(includeDescendants)`: each contact point of the Solid's body (and of its
   descendants' bodies when asked, for a top Solid only, as Webots), with the node id of the Solid
   that owns the touching body, at the pose the last step ended in (`wbtc.runtime.end_contacts`);
+- `Node.getStaticBalance`: whether a top Solid's centre of mass projects, along gravity, inside the
+  convex hull of its contact points (its support polygon), as Webots documents it;
 - a field's value: a Solid's `translation` / `rotation` (or a PROTO parameter written `IS` into an
   inner Solid's) read where the body is now, every other field as the scene holds it.
 
-Not honoured yet: contact point tracking (Webots' `enableContactPointsTracking` keeps points between
-calls; here they are read on demand), and the contact points' order (MuJoCo's collider order).
+The contact points come Solid by Solid: the node's own first, then each descendant's in scene order;
+within a Solid, in MuJoCo's collider order (Webots': ODE's). Not honoured yet: contact point tracking
+(Webots' `enableContactPointsTracking` keeps points between calls; here they are read on demand).
 """
 
 from __future__ import annotations
@@ -55,6 +58,65 @@ def pose(sim: Simulation, tree: SceneTree, node: Node, op: str, relative_to: Nod
 
 def contact_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bool) -> list[tuple[list[float], int]]:
     """The contact points touching `node`'s body (and its descendants'), each with its owner's node id."""
+    return [([float(v) for v in sim.from_model @ point], owner)
+            for point, owner in _model_points(sim, tree, node, descendants)]
+
+
+def static_balance(sim: Simulation, tree: SceneTree, node: Node) -> bool:
+    """Webots' static balance of a top Solid: its centre of mass above its support polygon.
+
+    The support polygon is the convex hull of the Solid's contact points (its descendants' included)
+    projected on the plane orthogonal to gravity; the test is whether the centre of mass (the whole
+    tree's, as `getCenterOfMass`) projects inside it, its edges included. Fewer than three points that
+    are not in a line make no polygon: not balanced. Gravity 0 has no such plane: not balanced.
+    """
+    body = poses.solid_body(sim, node)
+    gravity = np.asarray(sim.model.opt.gravity, float)
+    if body is None or not is_top_solid(tree, node) or not gravity.any():
+        return False
+    down = gravity / np.linalg.norm(gravity)
+    # Two axes across gravity (model axes): any vector not along it, then their cross products.
+    first = np.cross(down, (1.0, 0.0, 0.0) if abs(down[0]) < 0.9 else (0.0, 1.0, 0.0))
+    first /= np.linalg.norm(first)
+    second = np.cross(down, first)
+    flat = [(float(first @ point), float(second @ point)) for point, _ in _model_points(sim, tree, node, True)]
+    hull = _convex_hull(flat)
+    if len(hull) < 3:
+        return False
+    com = sim.data.subtree_com[body]
+    return _inside((float(first @ com), float(second @ com)), hull)
+
+
+def _convex_hull(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
+    """The convex hull of 2-D points, counter-clockwise, without collinear points (Andrew's monotone chain)."""
+    points = sorted(set(points))
+    if len(points) < 3:
+        return points
+
+    def turn(o: tuple[float, float], a: tuple[float, float], b: tuple[float, float]) -> float:
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower: list[tuple[float, float]] = []
+    upper: list[tuple[float, float]] = []
+    for chain, ordered in ((lower, points), (upper, reversed(points))):
+        for point in ordered:
+            while len(chain) >= 2 and turn(chain[-2], chain[-1], point) <= 0:
+                chain.pop()
+            chain.append(point)
+    return lower[:-1] + upper[:-1]
+
+
+def _inside(point: tuple[float, float], hull: list[tuple[float, float]]) -> bool:
+    """Whether `point` lies in the counter-clockwise convex polygon `hull` (edges included, to 1e-12)."""
+    x, y = point
+    for (ax, ay), (bx, by) in zip(hull, hull[1:] + hull[:1], strict=True):
+        if (bx - ax) * (y - ay) - (by - ay) * (x - ax) < -1e-12:
+            return False
+    return True
+
+
+def _model_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bool) -> list[tuple[np.ndarray, int]]:
+    """`contact_points` in the model's axes."""
     body = poses.solid_body(sim, node)
     if body is None:
         return []
@@ -72,9 +134,18 @@ def contact_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bo
             b = int(sim.model.geom_bodyid[geom])
             if b == body or (descendants and descends(sim.model, b, body)):
                 owner = owners.get(b, node)
-                points.append(([float(v) for v in sim.from_model @ contact.pos], tree.node_id(owner)))
+                points.append((b != body, b, np.array(contact.pos), tree.node_id(owner)))
                 break
-    return points
+    # The node's own points first, then each descendant's in scene order (MuJoCo's bodies are numbered
+    # in it), each Solid's in the collider's order: Webots lists ODE's contacts, whose collisions follow
+    # the order its geoms were made in, and wbtc.runtime.ode_cylinders appends points after the others.
+    points.sort(key=lambda point: point[:2])
+    return [(point, owner) for _, _, point, owner in points]
+
+
+def is_top_solid(tree: SceneTree, node: Node) -> bool:
+    """Whether `node` is a Solid that no Solid holds (Webots' `isTopLevel`)."""
+    return node.is_a("Solid") and not _below_a_solid(tree, node)
 
 
 def _below_a_solid(tree: SceneTree, node: Node) -> bool:

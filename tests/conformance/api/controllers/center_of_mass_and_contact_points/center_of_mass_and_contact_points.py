@@ -44,7 +44,10 @@ ts_assert_boolean_equal(epsilon <= THRESHOLD, "The center of mass position does 
 number_of_contact_points = node.getNumberOfContactPoints(False)
 ts_assert_boolean_equal(number_of_contact_points == REFERENCE_NUMBER_OF_CONTACT_POINTS, "Wrong number of contact points.")
 
-for i in range(REFERENCE_NUMBER_OF_CONTACT_POINTS):
+# Webots' C test sums over 20 points against its 48 reference values (16 points), reading past the array, then
+# resets the sum: the positions are not checked. The port sums what the array holds and resets it all the same.
+REFERENCE_POINTS_GIVEN = len(REFERENCE_CONTACT_POINTS) // 3
+for i in range(min(REFERENCE_NUMBER_OF_CONTACT_POINTS, REFERENCE_POINTS_GIVEN)):
     for j in range(3):
         epsilon += abs(node.getContactPoint(i)[j] - REFERENCE_CONTACT_POINTS[3 * i + j])
 epsilon = 0.0
@@ -54,7 +57,7 @@ node.enableContactPointsTracking(TIME_STEP, False)
 contact_points = node.getContactPoints(False)
 number_of_contact_points = len(contact_points)
 ts_assert_boolean_equal(number_of_contact_points == REFERENCE_NUMBER_OF_CONTACT_POINTS, "Wrong number of contact points.")
-for i in range(REFERENCE_NUMBER_OF_CONTACT_POINTS):
+for i in range(min(number_of_contact_points, REFERENCE_POINTS_GIVEN)):
     for j in range(3):
         epsilon += abs(contact_points[i].point[j] - REFERENCE_CONTACT_POINTS[3 * i + j])
 epsilon = 0.0
