@@ -30,6 +30,9 @@ import mujoco
 import numpy as np
 
 Step = Callable[[mujoco.MjModel, mujoco.MjData], None]
+Start = tuple[tuple[float, float, float], list[float], tuple[float, float, float], tuple[float, float, float],
+              list[float]]
+
 
 class ComIntegration:
     """The free joints of one model."""
@@ -44,8 +47,8 @@ class ComIntegration:
         self._shift = np.zeros(model.nv)  # the rows' correction, as joint accelerations
         self._rows = np.zeros(0)
         # Per body at the substep's start (`hook`): centre of mass, orientation (xmat), arm (origin to
-        # centre of mass), the origin's centripetal acceleration, all in world axes.
-        self._start: list[tuple[tuple[float, ...], list[float], tuple[float, ...], tuple[float, ...]]] | None = None
+        # centre of mass), the origin's centripetal acceleration, all in world axes; its quaternion.
+        self._start: list[Start] | None = None
 
     def __bool__(self) -> bool:
         return len(self.offsets) > 0
@@ -63,7 +66,7 @@ class ComIntegration:
 
         Per body in plain floats: robots are a few bodies, and numpy's per-call cost is what counts.
         """
-        start = []
+        start: list[Start] = []
         xipos, xpos, xmat, cvel, shift = data.xipos, data.xpos, data.xmat, data.cvel, self._shift
         for body, adr, dof in self._each:
             cx, cy, cz = xipos[body].tolist()  # mj_step1's kinematics, at the substep's start
@@ -134,7 +137,7 @@ class _Rotation:
 
     def __init__(self, quat: list[float]) -> None:
         w, x, y, z = quat
-        norm = (w * w + x * x + y * y + z * z) ** 0.5  # MuJoCo normalises them after integrating
+        norm = (w * w + x * x + y * y + z * z) ** 0.5  # as ODE's step normalises it (dNormalize4)
         self.w, self.x, self.y, self.z = w / norm, x / norm, y / norm, z / norm
 
     def turn(self, v: tuple[float, float, float] | list[float]) -> tuple[float, float, float]:

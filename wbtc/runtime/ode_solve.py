@@ -24,8 +24,8 @@ accelerations MuJoCo integrates are then the ones found here. Measured against O
 
 Not honoured: WorldInfo `CFM` as written (the friction rows take its default); MuJoCo's torsional
 and rolling rows (condim 4 and 6) keep their noslip forces; an island of more contacts than
-`island_limit` allows keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity servos (MuJoCo
-actuators, outside the rows), where ODE's are rows of this LCP.
+`island_limit` allows keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity
+servos (MuJoCo actuators, outside the rows), where ODE's are rows of this LCP.
 """
 
 from __future__ import annotations

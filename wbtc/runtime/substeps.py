@@ -61,7 +61,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     if bounces is not None:
         hooks.append(bounces)  # the rows' references as the other rules leave them
     if com is not None:
-        hooks.append(com.hook)  # last: it shifts the references every rule above has set
+        hooks.append(com.hook)  # after every rule that sets the rows' references: it shifts them
     # Under ODE's contacts each substep's contact rows are solved again, ODE's way, before integrating.
     finish = ode_solve.step2 if ode_solve.applies(model) else mujoco.mj_step2
     if not hooks and finish is mujoco.mj_step2:
