@@ -113,13 +113,18 @@ def _verdict(events: dict[int, list[str]], code: int | None, output: str) -> tup
     return True, f"{len(events)} controller(s) OK"
 
 
-def run_test(test: str) -> Outcome:
-    """Run one test world under `wbtc run --headless` and read its verdict."""
+def run_test(test: str, environment: dict[str, str] | None = None) -> Outcome:
+    """Run one test world under `wbtc run --headless` and read its verdict.
+
+    `environment` is the caller's environment, copied in its own thread (`run_many`): pytest sets and
+    removes PYTEST_CURRENT_TEST in the main thread while workers start their runs, and copying
+    `os.environ` from a worker can then fail half-way (KeyError).
+    """
     start = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="wbtc-conf-") as tmp:
         results = Path(tmp) / "results.txt"
         log = Path(tmp) / "output.txt"
-        env = dict(os.environ)
+        env = dict(os.environ if environment is None else environment)
         env["WBTC_TS_RESULTS"] = str(results)
         # webots:// assets come from the few files of Webots' repository kept in `webots_home/`, never
         # from the network or the user's asset cache (`wbtc.compile.remote`).
@@ -129,7 +134,7 @@ def run_test(test: str) -> Outcome:
         env["PYTHONPATH"] = os.pathsep.join([str(LIB), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)
         with log.open("w", encoding="utf-8") as out:
             # WBTC_CONFORMANCE_OPTIONS: more `wbtc run` options (e.g. --ode-contacts), to measure them.
-            extra = os.environ.get("WBTC_CONFORMANCE_OPTIONS", "").split()
+            extra = env.get("WBTC_CONFORMANCE_OPTIONS", "").split()
             process = subprocess.Popen([*_wbtc_command(), "run", str(world_of(test)), "--headless", *extra], env=env,
                                        stdout=out, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL,
                                        start_new_session=True)
@@ -181,6 +186,7 @@ def default_workers() -> int:
 def run_many(tests: list[str], workers: int | None = None) -> dict[str, Future[Outcome]]:
     """Start every test on a pool of `workers` threads (each drives its own processes)."""
     pool = ThreadPoolExecutor(max_workers=workers or default_workers())
-    futures = {test: pool.submit(run_test, test) for test in tests}
+    environment = dict(os.environ)  # in this thread: see run_test
+    futures = {test: pool.submit(run_test, test, environment) for test in tests}
     pool.shutdown(wait=False)
     return futures
