@@ -182,10 +182,11 @@ class SupervisorHub:
         if op == "getContactPoints":
             return queries.contact_points(sim, tree, node, bool(args[0]) if args else False)
         if op == "getStaticBalance":
-            if poses.solid_body(sim, node) is None or not queries.is_top_solid(tree, node):
+            body = poses.solid_body(sim, node)
+            if body is None or not queries.is_top_solid(tree, node):
                 raise SupervisorError("Warning: wb_supervisor_node_get_static_balance() can exclusively be used with a "
                                       "top Solid")
-            return queries.static_balance(sim, tree, node)
+            return queries.static_balance(sim, tree, node, body)
         if op == "exportString":
             return scene_ops.export_string(node)
         raise SupervisorError(f"Error: {op}() is not supported by wbtc yet.")

@@ -62,17 +62,17 @@ def contact_points(sim: Simulation, tree: SceneTree, node: Node, descendants: bo
             for point, owner in _model_points(sim, tree, node, descendants)]
 
 
-def static_balance(sim: Simulation, tree: SceneTree, node: Node) -> bool:
-    """Webots' static balance of a top Solid: its centre of mass above its support polygon.
+def static_balance(sim: Simulation, tree: SceneTree, node: Node, body: int) -> bool:
+    """Webots' static balance of a top Solid (`is_top_solid`) whose body is `body`.
 
-    The support polygon is the convex hull of the Solid's contact points (its descendants' included)
-    projected on the plane orthogonal to gravity; the test is whether the centre of mass (the whole
-    tree's, as `getCenterOfMass`) projects inside it, its edges included. Fewer than three points that
-    are not in a line make no polygon: not balanced. Gravity 0 has no such plane: not balanced.
+    Whether its centre of mass lies above its support polygon: the convex hull of the Solid's contact
+    points (its descendants' included) projected on the plane orthogonal to gravity; the test is whether
+    the centre of mass (the whole tree's, as `getCenterOfMass`) projects inside it, its edges included.
+    Fewer than three points that are not in a line make no polygon: not balanced. Gravity 0 has no
+    such plane: not balanced.
     """
-    body = poses.solid_body(sim, node)
     gravity = np.asarray(sim.model.opt.gravity, float)
-    if body is None or not is_top_solid(tree, node) or not gravity.any():
+    if not gravity.any():
         return False
     down = gravity / np.linalg.norm(gravity)
     # Two axes across gravity (model axes): any vector not along it, then their cross products.
