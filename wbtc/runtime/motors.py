@@ -31,6 +31,9 @@ available torque allows, as with ODE's motor (`_damping_lead`). Coupled motors (
 relayed by the controller library.
 
 Joints of trees without any Physics move by Webots' kinematic rule instead (`kinematic_motors`).
+
+Under `--ode-contacts` a motor in position or velocity control is ODE's motor row instead of the servo
+(`motor_rows`): the same velocity command, asked of a constraint row bounded by the available torque.
 """
 
 from __future__ import annotations
@@ -43,7 +46,7 @@ import mujoco
 import numpy as np
 
 from wbtc.compile.table import DeviceEntry
-from wbtc.runtime import kinematic_motors
+from wbtc.runtime import kinematic_motors, motor_rows, ode_solve
 from wbtc.runtime.joint_stops import Engaged
 
 
@@ -57,6 +60,7 @@ class Motor:
         self.qpos_adr = int(model.jnt_qposadr[joint])
         self.dof_adr = int(model.jnt_dofadr[joint])
         self.kv = float(model.actuator_gainprm[self.actuator, 0])
+        self.static_friction = float(model.dof_frictionloss[self.dof_adr])  # the joint's own, as compiled
         self.stiffness = self.kv  # this step's highest gain: kv, more while stops hold other joints (`_coupled`)
         self.gain = self.kv
         self._kinematic: tuple[mujoco.MjModel | None, int] = (None, -1)  # (model, its holding equality)
@@ -80,6 +84,7 @@ class Motor:
         self.integral = 0.0
         self.prev_error = 0.0
         self.command = 0.0
+        self.row_command: float | None = None  # this step's velocity for ODE's motor row (motor_rows), if any
         self.kinematic_velocity = 0.0  # Webots' current velocity of a kinematic joint (see kinematic_motors)
         self.feedback_period = 0  # torque/force feedback sampling period, ms (0: disabled)
         self.feedback_due = math.inf
@@ -135,20 +140,20 @@ class Motor:
         if self._kinematic[1] >= 0:
             kinematic_motors.move(self, model, data, ts, self._kinematic[1])
             return
+        if ode_solve.applies(model):  # --ode-contacts: ODE's motor row instead of the servo
+            motor_rows.update(self, model, data, ts)
+            return
         a = self.actuator
         if self.torque is not None:
             # Force control: a plain motor (gain 1, no velocity feedback), as ODE's constant force.
-            model.actuator_gainprm[a, 0] = 1.0
-            model.actuator_biasprm[a, 2] = 0.0
-            model.dof_armature[self.dof_adr] = 0.0  # Webots joints have none; it only served the servo
-            self._written = (None, math.nan)
+            self.plain(model)
             data.ctrl[a] = self.torque
             return
         views = self._views
         if views[0] is not data or views[1] is not model:  # every MjData/MjModel array read is a new view
             views = self._views = (data, model, data.qpos, data.qvel, data.ctrl, model.dof_damping)
         _, _, qpos, qvel, ctrl, damping = views
-        wanted = self._velocity_command(ts, float(qpos[self.qpos_adr]))
+        wanted = self.velocity_command(ts, float(qpos[self.qpos_adr]))
         velocity = float(qvel[self.dof_adr])
         coupled = self._coupled(model, data, stops, wanted - velocity)
         self.stiffness = self.kv if coupled is None else max(self.kv, self.kv * coupled[1] / coupled[0])
@@ -164,6 +169,13 @@ class Motor:
             model.dof_armature[self.dof_adr] = self.gain * model.opt.timestep
             self._written = (model, self.gain)
         ctrl[a] = wanted + self._damping_lead(float(damping[self.dof_adr]), velocity, wanted)
+
+    def plain(self, model: mujoco.MjModel) -> None:
+        """Make the actuator a plain motor (gain 1, no velocity feedback): its ctrl is then a force."""
+        model.actuator_gainprm[self.actuator, 0] = 1.0
+        model.actuator_biasprm[self.actuator, 2] = 0.0
+        model.dof_armature[self.dof_adr] = 0.0  # Webots joints have none; it only served the servo
+        self._written = (None, math.nan)
 
     def _saturate(self, model: mujoco.MjModel, data: mujoco.MjData, wanted: float, velocity: float,
                   ts: float, mobility: float | None = None) -> bool:
@@ -189,10 +201,7 @@ class Motor:
         if abs(needed) <= self.available:
             return False
         a = self.actuator
-        model.actuator_gainprm[a, 0] = 1.0
-        model.actuator_biasprm[a, 2] = 0.0
-        model.dof_armature[d] = 0.0
-        self._written = (None, math.nan)
+        self.plain(model)
         data.ctrl[a] = math.copysign(self.available, needed)
         return True
 
@@ -213,7 +222,7 @@ class Motor:
         room = max(self.available - self.gain * abs(wanted - velocity), 0.0)
         return min(max(damping * wanted, -room), room) / self.gain
 
-    def _velocity_command(self, ts: float, position: float) -> float:
+    def velocity_command(self, ts: float, position: float) -> float:
         """The velocity Webots asks for this step.
 
         The requested one in velocity control, else the PID's towards the target (clamped to the

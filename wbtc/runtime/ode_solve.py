@@ -17,15 +17,15 @@ row as MuJoCo made it (its regularisation R and reference acceleration are ODE's
 bounce), each friction row hard (WorldInfo's default `CFM`; reference: the sliding velocity gone
 within the substep, or a Track's belt speed reached) and boxed by its μ times the normal force found
 (ODE's `dContactApprox1`, along ODE's friction axes, dPlaneSpace of the normal), and the island's other
-rows (equalities, joint limits, friction losses) within their own bounds. The constraint forces and
+rows (equalities, joint limits, friction losses: ODE's motor rows, wbtc.runtime.motor_rows) within their
+own bounds. Islands with motor rows are solved even without a contact. The constraint forces and
 accelerations MuJoCo integrates are then the ones found here. Measured against ODE 0.16
 (tests/runtime/test_ode_solve.py): the pushed box tilts 0.00126 rad where ODE's tilts 0.00134, at one
 32 ms step and at 2 ms substeps alike.
 
 Not honoured: WorldInfo `CFM` as written (the friction rows take its default); MuJoCo's torsional
 and rolling rows (condim 4 and 6) keep their noslip forces; an island of more contacts than
-`island_limit` allows keeps MuJoCo's forces (the solve runs in Python). Motors stay wbtc's velocity
-servos (MuJoCo actuators, outside the rows), where ODE's are rows of this LCP.
+`island_limit` allows keeps MuJoCo's forces (the solve runs in Python), its motor rows too.
 """
 
 from __future__ import annotations
@@ -63,13 +63,25 @@ def island_limit(substep: float) -> int:
 
 def step2(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     """MuJoCo's `mj_step2`, stage by stage, with the contact rows solved again before integrating."""
+    live, chosen = _islands(model, data)
+    # The damped joints of the islands solved here get ODE's implicit damper row in the solve instead of
+    # MuJoCo's damping (its explicit force in this substep's passive forces, its implicit part in the
+    # integration), restored after the step.
+    dampers = _dampers(model, data, chosen)
+    damping = model.dof_damping[dampers]
+    if len(dampers):
+        data.qfrc_passive[dampers] += damping * data.qvel[dampers]
+        model.dof_damping[dampers] = 0.0
     mujoco.mj_fwdActuation(model, data)
     mujoco.mj_fwdAcceleration(model, data)
     mujoco.mj_fwdConstraint(model, data)
-    solve_contacts(model, data)
+    if len(chosen):
+        _solve(model, data, live, chosen, (dampers, damping))
     mujoco.mj_sensorAcc(model, data)
     mujoco.mj_checkAcc(model, data)
     mujoco.mj_Euler(model, data)  # wbtc's integrator (wbtc.compile.world)
+    if len(dampers):
+        model.dof_damping[dampers] = damping
 
 
 def _rows_dense(model: mujoco.MjModel, data: mujoco.MjData, rows: np.ndarray) -> np.ndarray:
@@ -84,32 +96,59 @@ def _rows_dense(model: mujoco.MjModel, data: mujoco.MjData, rows: np.ndarray) ->
     return dense
 
 
-def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
-    """Re-solve the contact rows of this substep as ODE does (after `mj_fwdConstraint`)."""
+def _islands(model: mujoco.MjModel, data: mujoco.MjData) -> tuple[np.ndarray, np.ndarray]:
+    """The contacts re-solved here (indices into data.contact) and the islands they and other rows are in.
+
+    MuJoCo's islands (bodies that touch, directly or through others) are independent problems; those
+    of more contacts than `island_limit` allows keep MuJoCo's forces. The others are solved as one
+    (their rows do not act on each other, so the sweeps treat them apart all the same).
+    """
     ncon = data.ncon
-    if not ncon:
-        return
     contacts = data.contact
     addresses = contacts.efc_address[:ncon]
     live = np.nonzero((addresses >= 0) & (contacts.dim[:ncon] >= 3))[0]
-    if not len(live) or not data.nisland:
-        return
-    # MuJoCo's islands (bodies that touch, directly or through others) are independent problems; those
-    # of more contacts than `island_limit` allows keep MuJoCo's forces. The others are solved as one
-    # (their rows do not act on each other, so the sweeps treat them apart all the same).
+    if not data.nisland:
+        return live[:0], live[:0]
     islands = data.efc_island[addresses[live]]
     live, islands = live[islands >= 0], islands[islands >= 0]  # (a row in no island: left as MuJoCo has it)
-    limit = island_limit(model.opt.timestep)
-    live = live[np.bincount(islands)[islands] <= limit] if len(live) else live
-    if not len(live):
-        return
+    crowded = np.bincount(islands, minlength=data.nisland) > island_limit(model.opt.timestep)
+    live = live[~crowded[islands]]
+    # Islands with joint friction rows are solved here too, contacts or not: under --ode-contacts these
+    # are ODE's motor rows (wbtc.runtime.motor_rows), hard, which MuJoCo's Newton solver leaves far
+    # from settled (a chain of 10 g links asked for 0.1 rad/s reached 530 rad/s in one 16 ms step).
+    chosen = np.union1d(data.efc_island[addresses[live]], _friction_islands(data))
+    return live, chosen[~crowded[chosen]]
+
+
+def _dampers(model: mujoco.MjModel, data: mujoco.MjData, chosen: np.ndarray) -> np.ndarray:
+    """The damped joint degrees of freedom (hinges, sliders, balls) of the islands `chosen`."""
+    damped = np.nonzero((model.dof_damping > 0.0) & _JOINT_DOF[model.jnt_type[model.dof_jntid]])[0]
+    if not len(damped) or not len(chosen):
+        return damped[:0]
+    island = data.dof_island[damped]
+    inside = np.zeros(data.nisland + 1, bool)  # (the last entry: a dof in no island, index -1)
+    inside[chosen] = True
+    return damped[inside[island]]
+
+
+def _solve(model: mujoco.MjModel, data: mujoco.MjData, live: np.ndarray, chosen: np.ndarray,
+           dampers: tuple[np.ndarray, np.ndarray]) -> None:
+    """Re-solve the rows of the islands `chosen` as ODE does (after `mj_fwdConstraint`).
+
+    `live`: their contacts; `dampers`: their damped joints' degrees of freedom and dampings, each an
+    implicit row of ODE's (Webots' spring-and-damper motor): its force −d v' at the velocity v' the
+    step ends with, unbounded.
+    """
+    contacts = data.contact
+    addresses = contacts.efc_address[:data.ncon]
     normal = addresses[live]
     friction = contacts.friction[live]
     # Rows: each contact's normal, then its two sliding friction rows (MuJoCo's elliptic layout).
     n = len(normal)
-    others, bounds = _other_rows(data, np.unique(data.efc_island[normal]))
+    others, bounds = _other_rows(data, chosen)
     rows = np.concatenate([normal, normal + 1, normal + 2, others])
-    jac = _rows_dense(model, data, rows)
+    dofs, damping = dampers
+    jac = np.concatenate([_rows_dense(model, data, rows), np.eye(model.nv)[dofs]])
     # Friction along ODE's axes: a box is not round, so where its sides lie matters.
     turn = _ode_turn(contacts.frame[live], friction)
     if turn is not None:
@@ -117,8 +156,11 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     solved = np.empty_like(jac)
     mujoco.mj_solveM(model, data, solved, jac)  # rows of J M^-1
     a_mat = jac @ solved.T
-    forces = data.efc_force[rows]
-    ref = data.efc_aref[rows]
+    h = model.opt.timestep
+    # A damper row's force is not in MuJoCo's solution (0); its reference stops the joint within the
+    # substep and its regularisation 1 / (h d) leaves it −d v' (ODE's CFM 1 / (h kp + kd), kp = 0).
+    forces = np.concatenate([data.efc_force[rows], np.zeros(len(dofs))])
+    ref = np.concatenate([data.efc_aref[rows], -data.qvel[dofs] / h])
     if turn is not None:
         forces[n:3 * n] = _turn(turn, forces[n:3 * n], n)
         ref[n:3 * n] = _turn(turn, ref[n:3 * n], n)
@@ -127,15 +169,17 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
     # The normal rows as MuJoCo made them (ODE's spring, damper and bounce); the friction rows' reference
     # is MuJoCo's too, the sliding velocity gone within the substep (or a Track belt's speed reached).
     # Friction rows are ODE's: hard, at WorldInfo's default CFM over the step.
-    friction_reg = np.full(2 * n, FRICTION_CFM / model.opt.timestep)
-    reg = np.concatenate([data.efc_R[normal], friction_reg, data.efc_R[others]])
+    friction_reg = np.full(2 * n, FRICTION_CFM / h)
+    reg = np.concatenate([data.efc_R[normal], friction_reg, data.efc_R[others], 1.0 / (h * damping)])
+    free = np.full(len(dofs), np.inf)
+    bounds = (np.concatenate([bounds[0], -free]), np.concatenate([bounds[1], free]))
     mu = np.concatenate([friction[:, 0], friction[:, 1]])
     new = lcp.solve(a_mat, accel, ref, reg, mu, bounds, forces, n)
     delta = new - forces
     back = new.copy()
     if turn is not None:
         back[n:3 * n] = _turn((turn[0], -turn[1]), new[n:3 * n], n)  # MuJoCo's axes again
-    data.efc_force[rows] = back
+    data.efc_force[rows] = back[:len(rows)]
     data.qfrc_constraint[:] += jac.T @ delta
     data.qacc[:] += solved.T @ delta  # M^-1 J^T delta
 
@@ -143,10 +187,20 @@ def solve_contacts(model: mujoco.MjModel, data: mujoco.MjData) -> None:
 _C = mujoco.mjtConstraint
 #: The kind of each MuJoCo constraint type: 0 a contact's (or not solved here), 1 an equality, 2 a friction
 #: loss (boxed), 3 one-sided (a limit, a frictionless contact).
+_FRICTION_DOF = int(_C.mjCNSTR_FRICTION_DOF)
+#: Whether a joint type's degrees of freedom are a joint's (free joints' damping is a Damping node's).
+_JOINT_DOF = np.array([False, True, True, True])  # mjJNT_FREE, mjJNT_BALL, mjJNT_SLIDE, mjJNT_HINGE
 _KIND = np.zeros(max(int(t) for t in _C.__members__.values()) + 1, int)
 _KIND[int(_C.mjCNSTR_EQUALITY)] = 1
 _KIND[[int(_C.mjCNSTR_FRICTION_DOF), int(_C.mjCNSTR_FRICTION_TENDON)]] = 2
 _KIND[[int(_C.mjCNSTR_LIMIT_JOINT), int(_C.mjCNSTR_LIMIT_TENDON), int(_C.mjCNSTR_CONTACT_FRICTIONLESS)]] = 3
+
+
+def _friction_islands(data: mujoco.MjData) -> np.ndarray:
+    """The islands that hold a joint friction row (a motor row, a joint's `staticFriction`)."""
+    nefc = data.nefc
+    island = data.efc_island[:nefc]
+    return np.unique(island[(data.efc_type[:nefc] == _FRICTION_DOF) & (island >= 0)])
 
 
 def _other_rows(data: mujoco.MjData, islands: np.ndarray) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:

@@ -48,7 +48,7 @@ class PropellerMotor(Motor):
 
         `stops` (the joint stops acting in the step) does not concern a propeller.
         """
-        omega = 0.0 if self.torque is not None else self._velocity_command(ts, self.angle)
+        omega = 0.0 if self.torque is not None else self.velocity_command(ts, self.angle)
         omega = min(max(omega, -self.max_velocity), self.max_velocity)
         self.angle += omega * ts
         axis = data.site_xmat[self.site].reshape(3, 3) @ self.axis

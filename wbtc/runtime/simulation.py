@@ -19,7 +19,7 @@ import numpy as np
 from wbtc.compile.frames import mat_to_quat, quat_to_axis_angle
 from wbtc.compile.result import CompileResult
 from wbtc.compile.table import DeviceEntry, RobotEntry
-from wbtc.runtime import conveyors, substeps, tone, tracks
+from wbtc.runtime import conveyors, motor_rows, ode_solve, substeps, tone, tracks
 from wbtc.runtime.battery import Battery
 from wbtc.runtime.connectors import Connector
 from wbtc.runtime.damping import CentreDrag, drags
@@ -181,11 +181,15 @@ class Simulation:
         by_torque = [(i, m) for i, m in enumerate(motors) if m.torque is not None]
         servo = np.array([m.torque is None for m in motors])
         total = np.zeros(len(motors))
+        rows = ode_solve.applies(model)  # ODE's motor rows (motor_rows) in place of the servos
+        dof_array = np.array(dofs)
         for _ in range(self.substeps):
             substep(model, data)
             # The servo's armature (see compile.device.tune_servos) is no part of the robot: the torque
             # the joint receives is the actuator's less what accelerating the armature took.
             total += servo * (data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs])
+            if rows:
+                total += servo * motor_rows.row_forces(data, dof_array)
             for i, motor in by_torque:
                 total[i] += motor.joint_limit_force(model, data)
         for motor, force in zip(motors, total / self.substeps, strict=True):

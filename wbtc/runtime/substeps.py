@@ -6,9 +6,10 @@ of bodies placed inside each other (`recovery`, while they are), and with `--ode
 cylinder-on-plane points (`ode_cylinders`) and restitution (`bounce`). When a step has any, each
 substep runs `mj_step1`, then the rules on this substep's contacts (the cylinder points and then the
 friction directions first, as they rebuild the constraints, then the belts' velocities), then
-`mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`, `mj_step2` is replaced by its
-stages with ODE's contact solve (`ode_solve`) before the integration, and free bodies are integrated
-at their centre of mass, as ODE's (`com_integration`).
+`mj_step2`; otherwise it is plain `mj_step`. With `--ode-contacts`, the motors' rows take ODE's
+motor reference (`motor_rows`), `mj_step2` is replaced by its stages with ODE's contact solve
+(`ode_solve`) before the integration, and free bodies are integrated at their centre of mass, as
+ODE's (`com_integration`).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from typing import TYPE_CHECKING
 
 import mujoco
 
-from wbtc.runtime import ode_cylinders, ode_solve, tracks
+from wbtc.runtime import motor_rows, ode_cylinders, ode_solve, tracks
 from wbtc.runtime.bounce import bounce_hook
 from wbtc.runtime.com_integration import ComIntegration
 from wbtc.runtime.contact_frames import ContactFrames
@@ -52,6 +53,12 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
+    if ode_solve.applies(model):
+        # ODE's motor rows (motor_rows) in place of the servos: after the rules that rebuild the rows.
+        rows = [m for r in sim.robots for m in r.motors.values() if m.row_command is not None]
+        motors = motor_rows.hook_for([m.dof_adr for m in rows], [m.row_command for m in rows])
+        if motors is not None:
+            hooks.append(motors)
     if recover is not None:
         if sim.moved:
             recover.find(model, sim.data)

@@ -5,7 +5,7 @@ Each basic step, before the physics, a Track's `Belt` computes its surface veloc
 
 - no motor, or no Physics in the rigid body the Track belongs to (Webots then has no ODE body for
   it): no velocity;
-- position or velocity control: the motor's velocity command (`Motor._velocity_command`, Webots'
+- position or velocity control: the motor's velocity command (`Motor.velocity_command`, Webots'
   PID on the belt's position, clamped to the requested velocity, `acceleration` limited), against the
   belt's own travelled distance; no velocity when the available force is 0 (maxForce does not limit
   the belt otherwise: only the contacts' friction does);
@@ -96,7 +96,7 @@ class Belt:
         elif motor.available <= 0.0:
             self.velocity = motor.command = 0.0  # Webots: no force, no control
         else:
-            self.velocity = motor._velocity_command(ts, self.position)
+            self.velocity = motor.velocity_command(ts, self.position)
         travelled = self.velocity * ts
         self.position += travelled
         for i, (_, _, radius, inner) in enumerate(self.wheels):
