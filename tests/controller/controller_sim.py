@@ -104,11 +104,15 @@ class FakeSim:
         send_frame(self.sock, reply)
         return duration, commands
 
-    def answer(self, op: str, *args: Any, result: Any = None, error: str | None = None, tag: int = -1) -> None:
-        """Receive one call frame, check that it is exactly ``("call", tag, op, args)``, and answer it."""
+    def answer(self, op: str, *args: Any, result: Any = None, error: str | None = None, tag: int = -1,
+               reply: dict | None = None) -> None:
+        """Receive one call frame, check that it is exactly ``("call", tag, op, args)``, and answer it.
+
+        ``reply``: more keys of the answer (a flush's ``failed`` writes).
+        """
         frame = self.recv()
         assert frame == ("call", tag, op, args), frame
-        send_frame(self.sock, {"error": error} if error is not None else {"result": result})
+        send_frame(self.sock, {"error": error} if error is not None else {"result": result, **(reply or {})})
 
     def finish(self) -> tuple[int, str, str]:
         """Close the connection and wait for the controller: (exit code, stdout, stderr)."""

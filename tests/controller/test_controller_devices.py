@@ -92,7 +92,7 @@ def test_presence_radar_range_finder_and_altimeter_values(sim) -> None:
         targets = [[t.distance, t.receiver_power, t.speed, t.azimuth] for t in radar.getTargets()]
         print(json.dumps([connector.getPresence(), radar.getNumberOfTargets(), targets, altimeter.getValue()]))
         print(json.dumps([range_finder.getRangeImage(), range_finder.getRangeImageArray(),
-                          range_finder.saveImage("depth.png", 100)]))
+                          range_finder.saveImage("depth.png", 100), range_finder.saveImage("missing/depth.png", 100)]))
         """,
         make_init(DEVICES),
     )
@@ -104,7 +104,8 @@ def test_presence_radar_range_finder_and_altimeter_values(sim) -> None:
     assert out.splitlines()[0] == "-1"
     assert json_lines("\n".join(out.splitlines()[1:])) == [
         [1, 1, [[2.0, -40.0, 0.5, 0.1]], 12.5],
-        [[1.0, 2.0, 3.0, float("inf")], [[1.0, 2.0], [3.0, float("inf")]], 0],
+        # A folder that does not exist: -1, as Webots' (an OSError stopped the controller).
+        [[1.0, 2.0, 3.0, float("inf")], [[1.0, 2.0], [3.0, float("inf")]], 0, -1],
     ]
     assert os.path.getsize(fake.path.parent / "depth.png") > 50
 

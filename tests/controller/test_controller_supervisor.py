@@ -466,7 +466,8 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         """,
         SUPERVISOR,
     )
-    # worldSave and animationStopRecording take effect at once, as in Webots: each flushes the buffered commands.
+    # worldSave, animationStartRecording and animationStopRecording take effect at once, as in Webots: each
+    # flushes the buffered commands.
     fake.answer("flush", [
         (-1, "simulationSetMode", 2),
         (-1, "simulationReset"),
@@ -481,10 +482,9 @@ def test_simulation_control_recording_and_their_checks(sim, tmp_path) -> None:
         (-1, "movieStartRecording", str(tmp_path / "film.mp4"), 640, 480, 0, 80, 1, False),
         (-1, "movieStopRecording"),
     ])
-    fake.answer("flush", [
-        (-1, "animationStartRecording", str(tmp_path / "anim.html")),
-        (-1, "animationStopRecording"),
-    ])
+    # animationStartRecording too: Webots answers whether the recording started.
+    fake.answer("flush", [(-1, "animationStartRecording", str(tmp_path / "anim.html"))])
+    fake.answer("flush", [(-1, "animationStopRecording")])
     assert fake.step() == (32, [(-1, "worldLoad", str(tmp_path / "other.wbt"))])
     fake.answer("simulationGetMode", result=0)
     rc, out, err = fake.finish()
@@ -670,3 +670,22 @@ def test_get_proto_climbs_the_chain_and_its_parameters_are_read_only_views(sim) 
         "Error: wb_supervisor_proto_get_field() called with a NULL or empty 'name' argument.",
         "Error: wb_supervisor_proto_get_field_by_index() called with a negative 'index' argument: -1.",
     ]
+
+
+def test_world_save_and_animation_start_say_whether_the_simulator_could(sim, tmp_path) -> None:
+    # Webots' wb_supervisor_world_save and wb_supervisor_animation_start_recording return the status the
+    # simulator sends back: False when it could not write (a folder that does not exist).
+    fake = sim(
+        """
+        from controller import Supervisor
+        supervisor = Supervisor()
+        print(supervisor.worldSave("missing/copy.wbt"), supervisor.animationStartRecording("missing/anim.html"))
+        """,
+        SUPERVISOR,
+    )
+    fake.answer("flush", [(-1, "worldSave", str(tmp_path / "missing" / "copy.wbt"))],
+                reply={"failed": ["worldSave"]})
+    fake.answer("flush", [(-1, "animationStartRecording", str(tmp_path / "missing" / "anim.html"))],
+                reply={"failed": ["animationStartRecording"]})
+    rc, out, _ = fake.finish()
+    assert (rc, out.splitlines()) == (0, ["False False"])

@@ -156,3 +156,20 @@ E-puck { translation 1 1 0 name "newcomer" controller "drive" controllerArgs [ "
     scene, _ = load_world(tmp_path / "saved.wbt")
     driver = next(n for n in scene.nodes if n.def_name == "DRIVER")
     assert driver.proto.values["translation"][0] == pytest.approx(-3 + 0.1256 * 0.5, abs=0.01)
+
+
+def test_writing_into_a_missing_folder_is_an_error_not_a_crash(tmp_path):
+    # exportImage into a folder that does not exist stopped the whole run with a traceback; worldSave
+    # and animationStartRecording returned True. Webots prints an error and says False.
+    code, data, output = _run(_world(tmp_path, "paths"), "--duration", "1")
+    assert code == 0, output
+    assert "Traceback" not in output
+    missing = tmp_path / "missing"
+    assert (f"[referee] Error: wb_supervisor_export_image(): cannot write {missing / 'shot.png'}: "
+            "No such file or directory.") in output
+    assert "[referee] export None" in output
+    assert "[referee] save False" in output
+    assert "[referee] animation False" in output
+    assert "[referee] still running 0.512" in output
+    assert data["sim_time"] == pytest.approx(1.0, abs=0.02)
+    assert not missing.exists()

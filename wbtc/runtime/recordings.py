@@ -6,6 +6,7 @@ when the run ends (see `record` and `animation` for what they write).
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -46,6 +47,10 @@ class Recordings:
         if self.animation is not None:
             raise RecordingError("Error: wb_supervisor_animation_start_recording(): an animation is already "
                                  "being recorded.")
+        folder = path.parent
+        if not folder.is_dir() or not os.access(folder, os.W_OK):  # the page is written at the stop
+            raise RecordingError(f"Error: wb_supervisor_animation_start_recording(): cannot write {path}: "
+                                 f"{'No such file or directory' if not folder.is_dir() else 'Permission denied'}.")
         self.animation = AnimationRecorder(sim, path)
 
     def after_step(self, sim: Simulation) -> None:

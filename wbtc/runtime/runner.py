@@ -186,11 +186,11 @@ def _answer(sim: Simulation, link: Link, message: tuple, hub: SupervisorHub | No
         return {"error": f"Error: {op}() needs a Robot whose 'supervisor' field is TRUE."}
     if op == "flush":  # writes Webots applies at once (imports, removals): applied now, no time passes
         _apply(sim, link, list(args[0]), hub)
-        hub.flush()
+        failed = hub.flush().failed  # worldSave and animationStartRecording return whether they worked
         _catch_up(sim, link)
         # Webots' library sees devices imported into its own robot at once (getDevice right after the import).
         # It also learns at once of the nodes the flush deleted (a removed node's children name nothing).
-        return {"result": None, "new_devices": commands.announce_devices(link.robot),
+        return {"result": None, "new_devices": commands.announce_devices(link.robot), "failed": failed,
                 **commands.tree_news(sim, link.robot)}
     from wbtc.runtime.supervisor import SupervisorError  # loaded with the hub already
 

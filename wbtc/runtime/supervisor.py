@@ -73,6 +73,7 @@ class FlushResult:
     time_shift: float = 0.0  # ms by which a reset moved time back
     keep_controllers: bool = False  # a reset that leaves every controller running (simulationReset)
     reload: bool = False  # the world file anew (worldReload, worldLoad), every controller restarted
+    failed: list[str] = field(default_factory=list)  # the writes refused with an error (worldSave's status)
 
 
 #: The writes that may delete nodes (an SFNode import replaces the node it holds): the tree is pruned after them.
@@ -220,6 +221,7 @@ class SupervisorHub:
                 self._apply(robot, op, args, dirty, outcome)
             except SupervisorError as exc:
                 print(f"[{robot.entry.name}] {exc}", file=sys.stderr)
+                outcome.failed.append(op)
         if outcome.reset:
             outcome.time_shift = self.sim.time_ms
             # A controller that goes on keeps its devices as they were set (sampling periods, channels);
@@ -280,7 +282,12 @@ class SupervisorHub:
             sim.labels[int(label_id)] = (str(text), float(x), float(y), float(size), int(color),
                                          float(transparency), str(font))
         elif op == "exportImage":
-            scene_ops.export_image(sim, str(args[0]), int(args[1]))
+            try:
+                scene_ops.export_image(sim, str(args[0]), int(args[1]))
+            except (OSError, ValueError) as exc:  # no such folder, no right to write, no such image format
+                reason = getattr(exc, "strerror", None) or exc
+                raise SupervisorError(f"Error: wb_supervisor_export_image(): cannot write {args[0]}: "
+                                      f"{reason}.") from None
         elif op in ("movieStartRecording", "animationStartRecording"):
             start = self.recordings.start_movie if op == "movieStartRecording" else self.recordings.start_animation
             try:

@@ -100,5 +100,8 @@ def save_image(function: str, filename: str, quality: int, width: int, height: i
         return -1
     if rgba is None:
         return -1
-    write_png(filename, width, height, rgba)
+    try:
+        write_png(filename, width, height, rgba)
+    except OSError:  # no such folder, no right to write: -1, as the JPEG's writer in the simulator says
+        return -1
     return 0

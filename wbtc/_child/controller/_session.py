@@ -71,6 +71,7 @@ class Session:
         self.states = [DeviceState(info) for info in init.get("devices") or []]
         self.by_tag = {state.tag: state for state in self.states}
         self.commands: list[tuple] = []
+        self.failed: list[str] = []  # the ops of the last flush the simulator refused (worldSave's status)
         self.ended = False
         self.in_step = False
         self.keyboard_period = 0
@@ -294,6 +295,7 @@ class Session:
         if "error" in reply:
             return False
         self.commands = []
+        self.failed = list(reply.get("failed") or [])
         self._forget_pending()
         self._new_devices(reply)
         self._tree_news(reply)

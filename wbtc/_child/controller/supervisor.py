@@ -195,8 +195,8 @@ class Supervisor(Robot):
             _error(f"Error: the target file given to {function}() should have the '.wbt' extension.")
             return False
         session.queue(ROBOT_TAG, "worldSave", os.path.abspath(filename) if filename else None)
-        session.flush(function)  # Webots writes the file before returning
-        return True
+        # Webots writes the file before returning, and says whether it could.
+        return session.flush(function) and "worldSave" not in session.failed
 
     def worldReload(self) -> None:
         """Reload the world from its file at the next step."""
@@ -292,7 +292,8 @@ class Supervisor(Robot):
             _error(f"Error: the target file given to {function}() should have the '.html' extension.")
             return False
         session.queue(ROBOT_TAG, "animationStartRecording", os.path.abspath(filename))
-        return True
+        # Webots starts at once and says whether it could (one animation at a time, a folder to write in).
+        return session.flush(function) and "animationStartRecording" not in session.failed
 
     def animationStopRecording(self) -> bool:
         """Stop recording the animation and write its page now."""
