@@ -187,7 +187,7 @@ def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         size = np.asarray(node.get("size"), dtype=float) * scale[:2] / 2
         return GeomSpec(mujoco.mjtGeom.mjGEOM_PLANE, np.array([size[0], size[1], 0.1]), frame)
     if kind in ("IndexedFaceSet", "Mesh"):
-        return _mesh(node, frame, ctx, textured, transform, clamp)
+        return _mesh(node, frame, ctx, textured, transform, clamp, collide=not visual)
     if kind == "ElevationGrid":
         return _hfield(node, frame, ctx)
     return None
@@ -225,7 +225,8 @@ def _cone(node: Node, frame: Frame, ctx: CompileContext, scale: np.ndarray) -> G
 
 
 def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
-          transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec | None:
+          transform: Node | None = None, clamp: texture_clamp.Clamp | None = None,
+          collide: bool = False) -> GeomSpec | None:
     found: list = []
     if node.base_type == "IndexedFaceSet":
         data = faceset.indexed_face_set(node, found)
@@ -236,12 +237,13 @@ def _mesh(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
         if node.base_type == "Mesh":
             ctx.warn("the Mesh's file cannot be read; it is left out", node.span)
         return None
-    return _mesh_data(node, data, frame, ctx, textured, transform, clamp)
+    return _mesh_data(node, data, frame, ctx, textured, transform, clamp, collide)
 
 
 def _mesh_data(node: Node, data: MeshData, frame: Frame, ctx: CompileContext, textured: bool,
-               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None) -> GeomSpec:
-    """The mesh geom of a triangle mesh made from `node` (scaled by the frame's scale)."""
+               transform: Node | None = None, clamp: texture_clamp.Clamp | None = None,
+               collide: bool = False) -> GeomSpec:
+    """The mesh geom of a triangle mesh made from `node` (scaled; `collide`: a bounding object's)."""
     vertices, faces, moved = np.asarray(data.vertices, dtype=float), np.asarray(data.faces), None
     if textured and data.texcoords is not None:
         # Webots transforms the coordinates with t upwards, then flips t into the image's rows (as
@@ -249,20 +251,44 @@ def _mesh_data(node: Node, data: MeshData, frame: Frame, ctx: CompileContext, te
         moved = textures.apply_texture_transform(data.texcoords, transform)
         if clamp is not None:
             vertices, faces, moved = texture_clamp.clamp_to_edge(vertices, faces, moved, clamp)
+    volume, com, inertia = mesh_volume_and_inertia(data)
+    if volume <= 1e-12 and (collide or len(vertices) < 4):
+        # Flat (a floor drawn as faces, a single triangle): MuJoCo needs a body to hull for collisions,
+        # and 4 vertices for any mesh.
+        vertices, moved = _slab(vertices, moved)
     name = ctx.unique("mesh", f"{node.base_type}_{node.span.line}")
     mesh = ctx.spec.add_mesh(name=name, uservert=(vertices * frame.scale).ravel().tolist(),
                              userface=np.asarray(faces).ravel().tolist())
     if moved is not None:
         mesh.usertexcoord = np.column_stack([moved[:, 0], 1.0 - moved[:, 1]]).astype(np.float32).ravel().tolist()
     mesh.info = info(node)
-    volume, com, inertia = mesh_volume_and_inertia(data)
     if volume <= 1e-12:
-        # Flat meshes (a floor drawn as faces) have no volume; MuJoCo needs a shell inertia for them.
+        # Flat meshes have no volume; MuJoCo needs a shell inertia for them.
         mesh.inertia = mujoco.mjtMeshInertia.mjMESH_INERTIA_SHELL
     scaled = Frame(frame.pos, frame.quat, np.ones(3))
     det = float(np.prod(frame.scale))
     return GeomSpec(mujoco.mjtGeom.mjGEOM_MESH, np.zeros(3), scaled, mesh=name,
                     unit_props=(volume * abs(det), inertia * abs(det)) if volume > 0 else None, com_offset=com)
+
+
+#: Half the thickness given to a flat mesh's collision hull, relative to the mesh's size.
+SLAB_HALF_THICKNESS = 5e-5
+
+
+def _slab(vertices: np.ndarray, texcoords: np.ndarray | None) -> tuple[np.ndarray, np.ndarray | None]:
+    """A flat mesh's vertices with copies just above and below its plane, used by no face.
+
+    MuJoCo collides a mesh through its convex hull and refuses one of coplanar vertices (and a mesh of
+    fewer than 4); ODE, Webots' engine, collides the triangles themselves, flat or not. The copies give
+    the hull a thickness of 1e-4 of the mesh's size (0.1 mm for 1 m), centred on the faces, and change
+    nothing drawn. Texture coordinates, one per vertex, are copied with them.
+    """
+    centre = vertices.mean(axis=0)
+    size = float(np.ptp(vertices, axis=0).max()) if len(vertices) else 0.0
+    normal = np.linalg.svd(vertices - centre)[2][-1]  # the direction the vertices do not spread in
+    offset = SLAB_HALF_THICKNESS * max(size, 1e-3) * normal
+    thick = np.vstack([vertices, vertices + offset, vertices - offset])
+    return thick, None if texcoords is None else np.vstack([texcoords, texcoords, texcoords])
 
 
 def _hfield(node: Node, frame: Frame, ctx: CompileContext) -> GeomSpec | None:
