@@ -27,6 +27,8 @@ class Span:
 UNREADABLE_FILE = "unreadable file"
 #: `Diagnostic.topic` of a warning about a Joint that Webots leaves unattached (`wbtc check` lists them).
 UNATTACHED_JOINT = "unattached joint"
+#: `Diagnostic.topic` of a warning about a value Webots replaces when it loads the world (`wbtc check` lists them).
+INVALID_VALUE = "invalid value"
 
 
 @dataclass(frozen=True, slots=True)

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from wbtc.errors import UNATTACHED_JOINT, UNREADABLE_FILE, Diagnostic, Span, WbtcError
+from wbtc.errors import INVALID_VALUE, UNATTACHED_JOINT, UNREADABLE_FILE, Diagnostic, Span, WbtcError
 from wbtc.runtime.controllers import NO_CONTROLLER, controller_folders, find_controller
 from wbtc.scene.model import Node, Scene
 
@@ -44,7 +44,7 @@ def _compile_check(scene: Scene) -> list[Diagnostic]:
         result = compile_scene(scene)
     except WbtcError as exc:
         return [Diagnostic(d.message, d.span, "warning", d.hint) for d in exc.diagnostics]
-    return [w for w in result.warnings if w.topic in (UNREADABLE_FILE, UNATTACHED_JOINT)]
+    return [w for w in result.warnings if w.topic in (UNREADABLE_FILE, UNATTACHED_JOINT, INVALID_VALUE)]
 
 
 def _robots(scene: Scene) -> list[Node]:

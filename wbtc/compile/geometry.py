@@ -25,6 +25,7 @@ from wbtc.compile.context import COLLISION_GROUP, VISUAL_GROUP, CompileContext, 
 from wbtc.compile.frames import LEGACY_PRIMITIVE_QUAT, Frame, quat_mul, quat_to_mat
 from wbtc.compile.mesh_data import MeshData
 from wbtc.compile.mesh_mass import mesh_volume_and_inertia
+from wbtc.errors import INVALID_VALUE
 from wbtc.scene.model import Node
 
 GEOMETRY_TYPES = frozenset({"Box", "Sphere", "Cylinder", "Capsule", "Cone", "Plane", "IndexedFaceSet", "Mesh",
@@ -150,6 +151,7 @@ def _geom_spec(node: Node, frame: Frame, ctx: CompileContext, textured: bool,
                transform: Node | None = None, clamp: texture_clamp.Clamp | None = None,
                painted: primitive_uv.Painted | None = None, visual: bool = False) -> GeomSpec | None:
     kind = node.base_type
+    _sanitize(node, ctx)
     scale = np.abs(frame.scale)
     if kind in _LEGACY_AXIS_TYPES and ctx.legacy_axes(node):
         # Before R2022a these primitives had their axis (or normal) along local y.
@@ -197,6 +199,29 @@ def _cylinder_props(r: float, h: float) -> tuple[float, np.ndarray]:
     volume = math.pi * r * r * h
     side = volume * (3 * r * r + h * h) / 12
     return volume, np.diag([side, side, volume * r * r / 2])
+
+
+#: The sizes Webots resets to 1 (each component) when one is 0 or less (its nodes' sanitizeFields).
+_POSITIVE = {"Box": ("size",), "Sphere": ("radius",), "Cylinder": ("radius", "height"),
+             "Capsule": ("radius", "height"), "Cone": ("bottomRadius", "height"), "Plane": ("size",)}
+
+
+def _sanitize(node: Node, ctx: CompileContext) -> None:
+    """Webots' check of a primitive's sizes: a value not positive is changed to 1, with its warning.
+
+    The field itself changes, as in Webots (a supervisor then reads 1 there too). A Box of size 0 0 0
+    is a 1 m box in Webots, and a Cone of height 0 made MuJoCo refuse the model (a mesh without volume).
+    """
+    for name in _POSITIVE.get(node.base_type, ()):
+        value = node.get(name)
+        components = list(value) if isinstance(value, tuple) else [value]
+        if all(float(v) > 0.0 for v in components):
+            continue
+        fixed = type(value)(*[1.0] * len(components)) if isinstance(value, tuple) else 1.0
+        shown = " ".join("1" for _ in components)
+        ctx.warn(f"Invalid '{name}' changed to {shown}. The value should be positive.",
+                 node.field_spans.get(name, node.span), topic=INVALID_VALUE)
+        node.fields[name] = fixed
 
 
 def _capsule_props(r: float, h: float) -> tuple[float, np.ndarray]:
