@@ -10,7 +10,9 @@ parent moves (Webots' implicit solid merging). Group, Pose and Transform are fra
 a top-level Billboard is a body at the Viewpoint's pose (its children face the view).
 
 Masses come from Physics nodes only: density × the volume of the Solid's own bounding objects, or
-`mass`; `centerOfMass` and `inertiaMatrix` override the computed ones. Bodies get explicit
+`mass`; `centerOfMass` and `inertiaMatrix` override the computed ones (an `inertiaMatrix` Webots finds
+invalid is left out with its warning; one that is valid for ODE but whose principal moments no body
+could have, A + B < C, which MuJoCo refuses, is replaced by their mean with a warning). Bodies get explicit
 inertials and every geom is massless to MuJoCo.
 
 Solids with `recognitionColors` are listed in the table for the runtime's camera recognition (and a
@@ -25,6 +27,8 @@ Robot `selfCollision FALSE` (the default) excludes every pair of the robot's col
 """
 
 from __future__ import annotations
+
+from typing import Any
 
 import mujoco
 import numpy as np
@@ -49,6 +53,7 @@ from wbtc.compile.frames import Frame, axis_angle_quat
 from wbtc.compile.kinematic_drive import find_drive
 from wbtc.compile.table import DeviceEntry, Recognizable, RobotEntry, plain
 from wbtc.compile.texture_clamp import Clamp
+from wbtc.errors import INVALID_VALUE
 from wbtc.scene.model import Node, Scene
 
 _UNHONOURED = frozenset({"immersionProperties", "locked", "battery"})
@@ -353,7 +358,7 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
         return
     volume = sum(p.volume for p in props)
     density, given_mass = float(physics.get("density")), float(physics.get("mass"))
-    matrix = physics.get("inertiaMatrix")
+    matrix = _two_lines(physics.get("inertiaMatrix"), ctx, physics)
     custom = matrix is not None and len(matrix) == 2 and given_mass > 0
     if volume <= 0 and not custom:
         # Webots' default mass settings for a body without a bounding volume: the given mass (else
@@ -375,13 +380,63 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
     com_field = physics.get("centerOfMass")
     if com_field is not None and len(com_field) > 0:
         com = np.asarray(com_field[0], dtype=float)
-    if matrix is not None and len(matrix) == 2:
+    if matrix is not None and len(matrix) == 2 and _valid_inertia(matrix, ctx, physics):
         # Webots writes [I11 I22 I33], [I12 I13 I23]; MuJoCo's fullinertia is xx yy zz xy xz yz.
-        body.fullinertia = [*map(float, matrix[0]), *map(float, matrix[1])]
+        body.fullinertia = _balanced([*map(float, matrix[0]), *map(float, matrix[1])], ctx, physics)
     else:
         body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
     body.mass = mass
     body.ipos = com
+
+
+def _two_lines(matrix: Any, ctx: CompileContext, physics: Node) -> Any:
+    """`inertiaMatrix` as Webots reads it: a missing second line is 0 0 0, lines past two are dropped."""
+    if matrix is None or len(matrix) in (0, 2):
+        return matrix
+    if len(matrix) == 1:
+        ctx.warn("'inertiaMatrix' must have exactly 0 or 2 lines. Second line inserted.", physics.span,
+                 topic=INVALID_VALUE)
+        return [matrix[0], (0.0, 0.0, 0.0)]
+    ctx.warn("'inertiaMatrix' must have exactly 0 or 2 lines. Extra lines skipped.", physics.span,
+             topic=INVALID_VALUE)
+    return list(matrix[:2])
+
+
+def _valid_inertia(matrix: Any, ctx: CompileContext, physics: Node) -> bool:
+    """Webots' check of a written `inertiaMatrix` (WbPhysics::checkInertiaMatrix), with its warnings.
+
+    Webots leaves an invalid matrix out; wbtc then uses the bounding object's inertia.
+    """
+    first, second = np.asarray(matrix[0], dtype=float), np.asarray(matrix[1], dtype=float)
+    valid = True
+    if (first <= 0.0).any():
+        ctx.warn("The first line of 'inertiaMatrix' (principal moments of inertia) must have only positive values.",
+                 physics.span, topic=INVALID_VALUE)
+        valid = False
+    full = np.array([[first[0], second[0], second[1]], [second[0], first[1], second[2]],
+                     [second[1], second[2], first[2]]])
+    if np.linalg.eigvalsh(full).min() <= 0.0:
+        ctx.warn("'inertiaMatrix' must be positive definite.", physics.span, topic=INVALID_VALUE)
+        valid = False
+    return valid
+
+
+def _balanced(full: list[float], ctx: CompileContext, physics: Node) -> list[float]:
+    """A written inertia MuJoCo accepts: principal moments that no body could have are made equal.
+
+    ODE takes any positive definite matrix; MuJoCo needs principal moments A + B >= C, as a real body's
+    are, and refuses the model otherwise. Those are replaced by their mean (MuJoCo's `balanceinertia`),
+    with a warning.
+    """
+    xx, yy, zz, xy, xz, yz = full
+    moments = np.sort(np.linalg.eigvalsh(np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])))
+    if moments[0] + moments[1] >= moments[2] * (1.0 - 1e-9):
+        return full
+    mean = float(moments.mean())
+    ctx.warn(f"'inertiaMatrix' has principal moments {moments[0]:g}, {moments[1]:g}, {moments[2]:g}, which "
+             f"no body has ({moments[0]:g} + {moments[1]:g} < {moments[2]:g}): MuJoCo needs a body's, so their "
+             f"mean {mean:g} is used", physics.span, topic=INVALID_VALUE)
+    return [mean, mean, mean, 0.0, 0.0, 0.0]
 
 
 def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, np.ndarray]:
