@@ -26,7 +26,7 @@ from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.runner import RunOptions, run
 from wbtc.runtime.scene_tree import SceneTree
 from wbtc.runtime.simulation import Simulation
-from wbtc.scene.model import Scene
+from wbtc.scene.model import Scene, allow_deep_worlds
 from wbtc.world_cache import load_and_compile
 
 if TYPE_CHECKING:
@@ -54,6 +54,7 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     Raises:
         WbtcError: the world does not load or compile, or an override names nothing.
     """
+    allow_deep_worlds()  # a world from the cache is walked at run time too (supervisor, recordings)
     compile_options = CompileOptions(max_substep_ms=physics_step, ode_contacts=ode_contacts)
     if fields:
         # Imported here, as the supervisor below: a world from the cache needs neither the parser,

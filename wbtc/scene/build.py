@@ -22,7 +22,7 @@ import math
 from typing import Any
 
 from wbtc.errors import Diagnostic, SchemaError, Span
-from wbtc.scene.model import PENDING_USE, Node, Scene
+from wbtc.scene.model import PENDING_USE, Node, Scene, allow_deep_worlds
 from wbtc.schema.registry import FieldSchema, node_schema, suggest
 from wbtc.vrml import syntax as s
 from wbtc.vrml.header import R2020B, R2022B, Version, before_r2022a
@@ -225,6 +225,7 @@ def build_scene(syntax: s.FileSyntax) -> Scene:
     Raises:
         SchemaError: with every error found (up to `MAX_ERRORS`), when the world breaks the schema.
     """
+    allow_deep_worlds()
     version = Version.parse(syntax.version or "") or R2022B
     builder = NodeBuilder(syntax.path, version)
     for extern in syntax.externprotos:

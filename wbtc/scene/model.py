@@ -8,6 +8,7 @@ object of its DEF, as Webots' USE is an exact copy of the DEF node.
 
 from __future__ import annotations
 
+import sys
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any
@@ -19,6 +20,17 @@ from wbtc.vrml.header import Version
 
 #: The type name of a placeholder for a USE whose DEF may come from a PROTO field's default.
 PENDING_USE = "USE"
+
+#: Python frames a world may need: building, expanding and compiling a node take about five frames per
+#: level of nesting, so the interpreter's default limit (1000) stopped a world at about 200 levels: a
+#: chain robot of 150 links (each a HingeJoint and its Solid, in the last link's children) did not load.
+RECURSION_LIMIT = 20000
+
+
+def allow_deep_worlds() -> None:
+    """Raise the interpreter's recursion limit to RECURSION_LIMIT (never lower it): Webots has none."""
+    if sys.getrecursionlimit() < RECURSION_LIMIT:
+        sys.setrecursionlimit(RECURSION_LIMIT)
 
 
 class Node:
