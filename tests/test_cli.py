@@ -3,6 +3,7 @@
 import json
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from wbtc.cli import app
@@ -79,3 +80,29 @@ def test_warnings_past_the_first_twenty_are_counted_as_warnings(tmp_path: Path) 
     lines = result.stderr.splitlines()
     assert sum("warning: the texture 'missing" in line for line in lines) == 20
     assert lines[-1] == "... and 3 more warnings"
+
+
+def test_run_options_out_of_range_are_errors_not_tracebacks(tmp_path: Path) -> None:
+    # `--physics-step 0` divided by zero while compiling, and `--trace` into a folder that does not exist
+    # failed opening the file: both ended in a traceback. A negative step or duration ran silently.
+    world = str(FIXTURES / "small_robot.wbt")
+    for option, value in (("--physics-step", "0"), ("--physics-step", "-1"), ("--duration", "-5")):
+        result = runner.invoke(app, ["run", world, "--headless", "--duration", "0.1", option, value])
+        assert result.exit_code == 2, result.output
+        assert f"Invalid value for '{option}'" in result.output
+    missing = tmp_path / "missing" / "trace.csv"
+    result = runner.invoke(app, ["run", world, "--headless", "--duration", "0.1", "--trace", str(missing)])
+    assert result.exit_code == 1
+    assert result.stderr.strip() == f"error: --trace: cannot write {missing}: no such folder {missing.parent}"
+    result = runner.invoke(app, ["run", world, "--headless", "--duration", "0.1", "--trace", str(tmp_path)])
+    assert result.exit_code == 1
+    assert result.stderr.strip() == f"error: --trace: cannot write {tmp_path}: Is a directory"
+    assert not missing.parent.exists()
+
+
+def test_the_python_api_refuses_a_physics_step_not_positive() -> None:
+    from wbtc.api import run
+    from wbtc.errors import WbtcError
+
+    with pytest.raises(WbtcError, match="the physics step must be positive, not 0 ms"):
+        run(FIXTURES / "small_robot.wbt", duration=0.1, physics_step=0)

@@ -97,7 +97,7 @@ def compile_command(
     output: Annotated[Path | None, typer.Option("-o", "--output", help="The MJCF file to write.")] = None,
     strict: Annotated[bool, typer.Option("--strict", help="Unhonoured fields and unresolved PROTOs are errors.")]
     = False,
-    substep: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+    substep: Annotated[float, typer.Option("--physics-step", min=0.001, help="Longest MuJoCo substep, ms.")] = 2.0,
     ode_contacts: Annotated[bool, typer.Option("--ode-contacts", help=_ODE_CONTACTS_HELP)] = False,
 ) -> None:
     """Compile a world to a MuJoCo model (MJCF), with its textures beside it."""
@@ -119,7 +119,7 @@ def compile_command(
 @app.command()
 def run(
     world: Annotated[Path, typer.Argument(help="The .wbt world file.")],
-    duration: Annotated[float | None, typer.Option("--duration", help="Simulated seconds to run.")] = None,
+    duration: Annotated[float | None, typer.Option("--duration", min=0.0, help="Simulated seconds to run.")] = None,
     headless: Annotated[bool, typer.Option("--headless", help="No viewer, even with a display.")] = False,
     realtime: Annotated[bool, typer.Option("--realtime", help="Run no faster than real time.")] = False,
     seed: Annotated[int | None, typer.Option("--seed", help="Seed of sensor noise (default: randomSeed).")] = None,
@@ -127,7 +127,7 @@ def run(
     trace: Annotated[Path | None, typer.Option("--trace", help="Write every robot's pose to a CSV file.")] = None,
     keys: Annotated[Path | None, typer.Option("--keys", help="Replay timed key presses (`time_s key` lines).")]
     = None,
-    physics_step: Annotated[float, typer.Option("--physics-step", help="Longest MuJoCo substep, ms.")] = 2.0,
+    physics_step: Annotated[float, typer.Option("--physics-step", min=0.001, help="Longest MuJoCo substep, ms.")] = 2.0,
     ode_contacts: Annotated[bool, typer.Option("--ode-contacts", help=_ODE_CONTACTS_HELP)] = False,
     no_noise: Annotated[bool, typer.Option("--no-noise", help="Turn sensor noise off.")] = False,
     record: Annotated[Path | None, typer.Option(

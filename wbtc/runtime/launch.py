@@ -17,10 +17,10 @@ import sys
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import IO, TYPE_CHECKING, Any
 
 from wbtc.compile.context import CompileOptions
-from wbtc.errors import Diagnostic
+from wbtc.errors import Diagnostic, WbtcError
 from wbtc.runtime.interrupt import StopSignals
 from wbtc.runtime.outputs import TraceWriter, read_keys, summary
 from wbtc.runtime.runner import RunOptions, run
@@ -54,6 +54,8 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     Raises:
         WbtcError: the world does not load or compile, or an override names nothing.
     """
+    if not physics_step > 0:  # (the command line's --physics-step says so before)
+        raise WbtcError(f"the physics step must be positive, not {physics_step} ms")
     allow_deep_worlds()  # a world from the cache is walked at run time too (supervisor, recordings)
     compile_options = CompileOptions(max_substep_ms=physics_step, ode_contacts=ode_contacts)
     if fields:
@@ -81,10 +83,20 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     return Prepared(sim, hub, warnings, unhonoured, scene, compile_options)
 
 
+def _open_trace(trace: Path) -> IO[str]:
+    """The `--trace` file, open for writing; WbtcError (not a traceback) when it cannot be."""
+    try:
+        return trace.open("w", encoding="utf-8", newline="")
+    except OSError as exc:
+        raise WbtcError(f"--trace: cannot write {trace}: {exc.strerror or exc}") from None
+
+
 def launch(world: Path, *, duration: float | None, headless: bool, realtime: bool, seed: int | None,
            json_output: bool, trace: Path | None, keys: Path | None, physics_step: float, noise: bool,
            warn: Callable[[list[Diagnostic]], None], record: Path | None = None, ode_contacts: bool = False) -> int:
     """Run a world as `wbtc run` does (`record`: the video or page to write); returns the process exit code."""
+    if trace is not None and not trace.parent.is_dir():  # before compiling, which can take seconds
+        raise WbtcError(f"--trace: cannot write {trace}: no such folder {trace.parent}")
     key_script = read_keys(keys) if keys else []
     prepared = prepare(world, physics_step=physics_step, seed=seed, noise=noise, ode_contacts=ode_contacts)
     sim, hub = prepared.sim, prepared.hub
@@ -102,7 +114,7 @@ def launch(world: Path, *, duration: float | None, headless: bool, realtime: boo
         window = open_window(sim, world, lambda: hub.queue(None, "resetButton", ()))
     hooks = [window.sync] if window is not None else []
     hooks += [recorder] if recorder is not None else []
-    trace_file = trace.open("w", encoding="utf-8", newline="") if trace else None
+    trace_file = _open_trace(trace) if trace else None
     complete = False
     try:
         with StopSignals() as signals:
