@@ -99,6 +99,16 @@ def test_existing_table_needs_resume(tmp_path):
     assert "out.csv exists: pass --resume to finish that batch, or remove the file first" in done.stderr
 
 
+def test_a_table_into_a_missing_folder_is_refused_before_any_run(tmp_path):
+    # It raised FileNotFoundError (a traceback) when the table was first opened.
+    plan = make_plan(tmp_path, "", DRIVE)
+    missing = tmp_path / "missing" / "out.csv"
+    done = subprocess.run([sys.executable, "-m", "wbtc.cli", "batch", str(plan), "-o", str(missing)],
+                          capture_output=True, text=True)
+    assert done.returncode == 1 and "Traceback" not in done.stderr
+    assert done.stderr.strip() == f"error: cannot write the results table {missing}: no such folder {missing.parent}"
+
+
 def test_memory_limit_stops_a_greedy_controller(tmp_path):
     greedy = "from controller import Robot\nrobot = Robot()\nrobot.step(32)\nblock = bytearray(900 * 2**20)\n"
     plan = make_plan(tmp_path, "memory_mb = 600", greedy)

@@ -59,6 +59,8 @@ def run_batch(plan_path: Path, *, workers: int | None = None, resume: bool = Fal
     table_path = output or Path(plan.output)
     if table_path.exists() and not resume:
         raise WbtcError(f"{table_path} exists: pass --resume to finish that batch, or remove the file first")
+    if not table_path.parent.is_dir():  # before any run: a table with nowhere to go would lose them all
+        raise WbtcError(f"cannot write the results table {table_path}: no such folder {table_path.parent}")
     jobs = plan.jobs()
     params = list(jobs[0].params) if jobs else []
     table = Table(table_path, params, plan.robots, resume)
