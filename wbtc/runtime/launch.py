@@ -71,7 +71,8 @@ def prepare(world: Path, *, physics_step: float = 2.0, seed: int | None = None, 
     else:  # the world as written: what the last run of it gave, when nothing it was made from changed
         scene, expansion, result = load_and_compile(world, compile_options)
     unhonoured = [w for w in result.warnings if "not honoured" in w.message]
-    warnings = expansion.warnings + [w for w in result.warnings if w not in unhonoured]
+    # The scene's own (a file read with bytes that are not UTF-8), then the PROTO stage's, then the compiler's.
+    warnings = list(scene.warnings) + [w for w in result.warnings if w not in unhonoured]
     sim = Simulation(result, seed=seed, noise=noise)
     hub = None
     if any(r.supervisor for r in result.table.robots):

@@ -101,12 +101,35 @@ def parse_file(path: str | Path) -> s.FileSyntax:
     """
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8-sig")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise WbtSyntaxError(f"cannot read {path}: {exc.strerror if isinstance(exc, OSError) else exc}",
-                             None) from None
+        data = path.read_bytes()
+    except OSError as exc:
+        raise WbtSyntaxError(f"cannot read {path}: {exc.strerror}", None) from None
+    text, bad = _decode(data, str(path))
     kind = "proto" if path.suffix.lower() == ".proto" else "world"
-    return parse_text(text, str(path), kind)
+    result = parse_text(text, str(path), kind)
+    if bad is not None:
+        result.warnings.insert(0, bad)
+    return result
+
+
+def _decode(data: bytes, path: str) -> tuple[str, Diagnostic | None]:
+    """A file's text as UTF-8 (a byte-order mark skipped), and a warning when some bytes are not UTF-8.
+
+    Webots reads world and PROTO files as UTF-8 and turns bytes that are not (an é saved as Latin-1 by
+    an old editor) into U+FFFD, the replacement character, and goes on; so does wbtc, with a warning at
+    the first of them.
+    """
+    try:
+        return data.decode("utf-8-sig"), None
+    except UnicodeDecodeError as exc:
+        text = data.decode("utf-8-sig", errors="replace")
+        before = data[:exc.start].decode("utf-8-sig", errors="replace")
+        line = before.count("\n") + 1
+        column = len(before) - (before.rfind("\n") + 1) + 1
+        byte = data[exc.start]
+        return text, Diagnostic(f"byte 0x{byte:02x} is not UTF-8 (the file may be Latin-1): it and the other such "
+                                "bytes are read as U+FFFD, as Webots reads them", Span(path, line, column),
+                                severity="warning")
 
 
 def parse_value(text: str, path: str = "<value>") -> s.Value:
