@@ -380,9 +380,11 @@ def _inertial(body: mujoco.MjsBody, physics: Node | None, props: list[geometry.M
     com_field = physics.get("centerOfMass")
     if com_field is not None and len(com_field) > 0:
         com = np.asarray(com_field[0], dtype=float)
-    if matrix is not None and len(matrix) == 2 and _valid_inertia(matrix, ctx, physics):
-        # Webots writes [I11 I22 I33], [I12 I13 I23]; MuJoCo's fullinertia is xx yy zz xy xz yz.
-        body.fullinertia = _balanced([*map(float, matrix[0]), *map(float, matrix[1])], ctx, physics)
+    written = _full(matrix) if matrix is not None and len(matrix) == 2 else None
+    if written is not None and _valid_inertia(written, ctx, physics):
+        # MuJoCo's fullinertia is xx yy zz xy xz yz.
+        full = _balanced(written, ctx, physics)
+        body.fullinertia = [full[0, 0], full[1, 1], full[2, 2], full[0, 1], full[0, 2], full[1, 2]]
     else:
         body.fullinertia = [inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2]]
     body.mass = mass
@@ -402,41 +404,43 @@ def _two_lines(matrix: Any, ctx: CompileContext, physics: Node) -> Any:
     return list(matrix[:2])
 
 
-def _valid_inertia(matrix: Any, ctx: CompileContext, physics: Node) -> bool:
+def _full(matrix: Any) -> np.ndarray:
+    """The 3 x 3 inertia tensor of a written `inertiaMatrix`: Webots writes [I11 I22 I33], [I12 I13 I23]."""
+    (xx, yy, zz), (xy, xz, yz) = (map(float, matrix[0]), map(float, matrix[1]))
+    return np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])
+
+
+def _valid_inertia(full: np.ndarray, ctx: CompileContext, physics: Node) -> bool:
     """Webots' check of a written `inertiaMatrix` (WbPhysics::checkInertiaMatrix), with its warnings.
 
     Webots leaves an invalid matrix out; wbtc then uses the bounding object's inertia.
     """
-    first, second = np.asarray(matrix[0], dtype=float), np.asarray(matrix[1], dtype=float)
     valid = True
-    if (first <= 0.0).any():
+    if (np.diag(full) <= 0.0).any():
         ctx.warn("The first line of 'inertiaMatrix' (principal moments of inertia) must have only positive values.",
                  physics.span, topic=INVALID_VALUE)
         valid = False
-    full = np.array([[first[0], second[0], second[1]], [second[0], first[1], second[2]],
-                     [second[1], second[2], first[2]]])
     if np.linalg.eigvalsh(full).min() <= 0.0:
         ctx.warn("'inertiaMatrix' must be positive definite.", physics.span, topic=INVALID_VALUE)
         valid = False
     return valid
 
 
-def _balanced(full: list[float], ctx: CompileContext, physics: Node) -> list[float]:
+def _balanced(full: np.ndarray, ctx: CompileContext, physics: Node) -> np.ndarray:
     """A written inertia MuJoCo accepts: principal moments that no body could have are made equal.
 
     ODE takes any positive definite matrix; MuJoCo needs principal moments A + B >= C, as a real body's
     are, and refuses the model otherwise. Those are replaced by their mean (MuJoCo's `balanceinertia`),
     with a warning.
     """
-    xx, yy, zz, xy, xz, yz = full
-    moments = np.sort(np.linalg.eigvalsh(np.array([[xx, xy, xz], [xy, yy, yz], [xz, yz, zz]])))
+    moments = np.sort(np.linalg.eigvalsh(full))
     if moments[0] + moments[1] >= moments[2] * (1.0 - 1e-9):
         return full
     mean = float(moments.mean())
     ctx.warn(f"'inertiaMatrix' has principal moments {moments[0]:g}, {moments[1]:g}, {moments[2]:g}, which "
              f"no body has ({moments[0]:g} + {moments[1]:g} < {moments[2]:g}): MuJoCo needs a body's, so their "
              f"mean {mean:g} is used", physics.span, topic=INVALID_VALUE)
-    return [mean, mean, mean, 0.0, 0.0, 0.0]
+    return np.eye(3) * mean
 
 
 def _combine(props: list[geometry.MassProps], mass: float) -> tuple[np.ndarray, np.ndarray]:

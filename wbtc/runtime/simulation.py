@@ -181,15 +181,15 @@ class Simulation:
         by_torque = [(i, m) for i, m in enumerate(motors) if m.torque is not None]
         servo = np.array([m.torque is None for m in motors])
         total = np.zeros(len(motors))
-        rows = ode_solve.applies(model)  # ODE's motor rows (motor_rows) in place of the servos
-        dof_array = np.array(dofs)
+        # ODE's motor rows (motor_rows) in place of the servos: their degrees of freedom, else None.
+        row_dofs = np.array(dofs) if ode_solve.applies(model) else None
         for _ in range(self.substeps):
             substep(model, data)
             # The servo's armature (see compile.device.tune_servos) is no part of the robot: the torque
             # the joint receives is the actuator's less what accelerating the armature took.
             total += servo * (data.actuator_force[actuators] - model.dof_armature[dofs] * data.qacc[dofs])
-            if rows:
-                total += servo * motor_rows.row_forces(data, dof_array)
+            if row_dofs is not None:
+                total += servo * motor_rows.row_forces(data, row_dofs)
             for i, motor in by_torque:
                 total[i] += motor.joint_limit_force(model, data)
         for motor, force in zip(motors, total / self.substeps, strict=True):

@@ -35,13 +35,13 @@ Step = Callable[[mujoco.MjModel, mujoco.MjData], None]
 def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     """`mj_step`, or the split step running this world's contact rules between MuJoCo's halves."""
     hooks: list[Step] = []
+    ode = ode_solve.applies(model)  # --ode-contacts
     if sim.per_model[0] is not model:  # made once per model (robots and sensors change with it)
         touch = any(isinstance(s, TouchSensor) for r in sim.robots for s in r.sensors.values())
-        ode = ode_solve.applies(model)
         cylinders = ode_cylinders.hook_for(model) if ode else None
         com = ComIntegration(model) if ode else None
         sim.per_model = (model, bounce_hook(sim.table.bounce, model), touch,
-                         recovery_for(sim.table.recovery, model), cylinders, com if com else None)
+                         recovery_for(sim.table.recovery, model), cylinders, com or None)
         sim.moved = True  # a new model: look for placed overlaps
     _, bounces, touch, recover, cylinders, com = sim.per_model
     if cylinders is not None:
@@ -53,7 +53,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     belts = tracks.surface_hook(sim)
     if belts is not None:
         hooks.append(belts)
-    if ode_solve.applies(model):
+    if ode:
         # ODE's motor rows (motor_rows) in place of the servos: after the rules that rebuild the rows.
         rows = [m for r in sim.robots for m in r.motors.values() if m.row_command is not None]
         motors = motor_rows.hook_for([m.dof_adr for m in rows], [m.row_command for m in rows])
@@ -70,7 +70,7 @@ def substep_function(sim: Simulation, model: mujoco.MjModel) -> Step:
     if com is not None:
         hooks.append(com.hook)  # after every rule that sets the rows' references: it shifts them
     # Under ODE's contacts each substep's contact rows are solved again, ODE's way, before integrating.
-    finish = ode_solve.step2 if ode_solve.applies(model) else mujoco.mj_step2
+    finish = ode_solve.step2 if ode else mujoco.mj_step2
     if not hooks and finish is mujoco.mj_step2:
         sim.touched = None
         return mujoco.mj_step
